@@ -1,0 +1,902 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_ANALYTIC_SURFACES_H
+#define EXPMAP_ANALYTIC_SURFACES_H
+
+/// \file Analytic_surfaces.h
+/// Generators of analytic test meshes (sphere, planar grids, height fields,
+/// cylinder, cone) and the exact exponential maps (geodesic polar
+/// coordinates) of the surfaces for which they are known in closed form.
+///
+/// Every generator returns a `Triangle_soup` whose triangles are oriented
+/// counter-clockwise seen from the outside (for planar meshes and height
+/// fields: seen from +z). All generators are deterministic; the only random
+/// operation, `flip_random_edges()`, takes a seed and uses `std::mt19937`
+/// with its own (portable) shuffling, so it gives the same mesh on every
+/// platform and standard library. `soup_to_mesh()` turns a soup into any
+/// CGAL `MutableFaceGraph` (Surface_mesh, Polyhedron_3, ...) keeping the
+/// vertex order.
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace expmap {
+
+/// A triangle mesh as a polygon soup: an array of points and an array of
+/// triangles given by indices into `points`.
+///
+/// Triangles are oriented counter-clockwise seen from the outside of the
+/// surface (the right-hand normal points outward).
+struct Triangle_soup {
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::array<int, 3>> triangles;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t number_of_faces() const { return triangles.size(); }
+};
+
+/// Exact geodesic polar coordinates of a point relative to a source point.
+///
+/// `r` is the geodesic distance from the source. `theta_unrotated` is the
+/// polar angle in (-pi, pi] of the initial direction of the geodesic from the
+/// source, measured in the tangent plane at the source from the caller's
+/// reference direction `e1`, counter-clockwise about the outward normal `n`
+/// (i.e. `atan2(<d, e2>, <d, e1>)` with `e2 = n x e1`). It is "unrotated" in
+/// the sense that it is not aligned with the (arbitrary) angular reference of
+/// a computed map: comparisons with a computed map must first remove the
+/// constant rotation between the two. At the source itself r = 0 and
+/// theta_unrotated = 0.
+struct Polar {
+  double r = 0;
+  double theta_unrotated = 0;
+};
+
+namespace internal {
+namespace analytic {
+
+using Vec3 = std::array<double, 3>;
+
+inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline Vec3 add(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
+inline Vec3 scale(const Vec3& a, double s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b) {
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
+
+inline bool is_finite(const Vec3& a) {
+  return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
+}
+
+inline void require(bool condition, const std::string& message) {
+  if (!condition) throw std::invalid_argument("expmap: " + message);
+}
+
+inline void require_positive(double value, const char* function, const char* name) {
+  require(std::isfinite(value) && value > 0,
+          std::string(function) + ": " + name + " must be positive and finite (got " +
+              std::to_string(value) + ")");
+}
+
+inline void require_finite(double value, const char* function, const char* name) {
+  require(std::isfinite(value), std::string(function) + ": " + name + " must be finite");
+}
+
+inline void require_vertex_budget(double count, const char* function) {
+  require(count <= static_cast<double>(std::numeric_limits<int>::max()),
+          std::string(function) + ": too many vertices or triangles for int indices");
+}
+
+/// Unit vector along `v`; throws if `v` is (numerically) zero or not finite.
+inline Vec3 normalized(const Vec3& v, const std::string& what) {
+  const double length = norm(v);
+  require(std::isfinite(length) && length > 0, what + " must be a non-zero finite vector");
+  return scale(v, 1.0 / length);
+}
+
+/// Polar angle of the tangent vector `d` at a point of unit normal `n`,
+/// measured from `e1` (projected onto the tangent plane) counter-clockwise
+/// about `n`.
+inline double tangent_angle(const Vec3& d, const Vec3& n, const Vec3& e1, const char* function) {
+  require(is_finite(e1), std::string(function) + ": e1 must be finite");
+  const Vec3 e1_tangent = sub(e1, scale(n, dot(e1, n)));
+  const double e1_norm = norm(e1);
+  require(e1_norm > 0 && norm(e1_tangent) > 1e-12 * e1_norm,
+          std::string(function) +
+              ": e1 must not be zero or parallel to the surface normal at the source");
+  const Vec3 u = scale(e1_tangent, 1.0 / norm(e1_tangent));
+  const Vec3 v = cross(n, u);
+  return std::atan2(dot(d, v), dot(d, u));
+}
+
+/// Unbiased integer in [0, n) from the raw 32-bit output of a Mersenne
+/// twister (whose sequence is fixed by the standard, unlike the
+/// distributions and std::shuffle, which differ between libraries).
+inline std::uint32_t uniform_below(std::mt19937& generator, std::uint32_t n) {
+  const std::uint32_t threshold = (0u - n) % n;  // 2^32 mod n
+  for (;;) {
+    const std::uint32_t x = static_cast<std::uint32_t>(generator());
+    if (x >= threshold) return x % n;
+  }
+}
+
+inline std::uint64_t directed_key(int u, int v) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(u)) << 32) |
+         static_cast<std::uint64_t>(static_cast<std::uint32_t>(v));
+}
+
+/// Splits every cell of a (columns x rows) quad lattice into two triangles.
+/// `index(i, j)` gives the vertex at lattice corner (i, j), `i` modulo the
+/// caller's convention. The diagonal of cell (i, j) goes through its corner
+/// (i, j) when `(i + j + parity) % 2 == 0` ("/"), otherwise through the
+/// corners (i + 1, j) and (i, j + 1) ("\"). Triangles are counter-clockwise
+/// when i runs along the first and j along the second tangent direction of
+/// a right-handed frame (u, v, outward normal).
+template <class Index>
+void triangulate_lattice(int columns, int rows, int parity, Index index,
+                         std::vector<std::array<int, 3>>& triangles) {
+  for (int j = 0; j < rows; ++j) {
+    for (int i = 0; i < columns; ++i) {
+      const int v00 = index(i, j), v10 = index(i + 1, j);
+      const int v11 = index(i + 1, j + 1), v01 = index(i, j + 1);
+      if ((i + j + parity) % 2 == 0) {
+        triangles.push_back({{v00, v10, v11}});
+        triangles.push_back({{v00, v11, v01}});
+      } else {
+        triangles.push_back({{v00, v10, v01}});
+        triangles.push_back({{v10, v11, v01}});
+      }
+    }
+  }
+}
+
+/// Integrand of the meridian length of the Gaussian bump.
+inline double gaussian_bump_speed(double t, double amplitude, double sigma) {
+  const double u = t / sigma;
+  const double slope = amplitude / sigma * u * std::exp(-0.5 * u * u);
+  return std::sqrt(1.0 + slope * slope);
+}
+
+/// Composite 5-point Gauss-Legendre rule of `panels` equal panels on [0, rho].
+inline double gaussian_bump_quadrature(double rho, double amplitude, double sigma,
+                                       std::size_t panels) {
+  const double a = std::sqrt(10.0 / 7.0);
+  const double x1 = std::sqrt(5.0 - 2.0 * a) / 3.0, x2 = std::sqrt(5.0 + 2.0 * a) / 3.0;
+  const double w0 = 128.0 / 225.0;
+  const double w1 = (322.0 + 13.0 * std::sqrt(70.0)) / 900.0;
+  const double w2 = (322.0 - 13.0 * std::sqrt(70.0)) / 900.0;
+  const double h = rho / static_cast<double>(panels);
+  double sum = 0;
+  for (std::size_t k = 0; k < panels; ++k) {
+    const double c = (static_cast<double>(k) + 0.5) * h, half = 0.5 * h;
+    auto f = [&](double x) { return gaussian_bump_speed(c + half * x, amplitude, sigma); };
+    sum += half * (w0 * f(0.0) + w1 * (f(-x1) + f(x1)) + w2 * (f(-x2) + f(x2)));
+  }
+  return sum;
+}
+
+}  // namespace analytic
+}  // namespace internal
+
+// ---------------------------------------------------------------------------
+// Generators
+// ---------------------------------------------------------------------------
+
+/// Geodesic icosphere: the regular icosahedron subdivided `subdivisions`
+/// times, each time splitting every edge at its midpoint (four triangles per
+/// triangle) and projecting the new vertices radially onto the sphere.
+///
+/// The sphere is centred at the origin. It has `10 * 4^s + 2` vertices and
+/// `20 * 4^s` triangles (s = 5: 10,242 vertices; s = 6: 40,962 vertices and
+/// 81,920 triangles). Vertex ordering: vertices 0..11 are the icosahedron's,
+/// vertex 0 being at `radius * (-1, phi, 0) / sqrt(1 + phi^2)` (phi the golden
+/// ratio); then, level by level, the edge midpoints in the order they are
+/// first met while visiting the triangles of the previous level. Shared
+/// midpoints are created once (edge-midpoint cache), so the soup is a closed,
+/// consistently outward-oriented 2-manifold of genus 0.
+///
+/// \param subdivisions number of subdivision steps, in [0, 9]
+/// \param radius sphere radius, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
+  namespace A = internal::analytic;
+  A::require(subdivisions >= 0 && subdivisions <= 9,
+             "make_icosphere: subdivisions must be in [0, 9] (got " +
+                 std::to_string(subdivisions) + ")");
+  A::require_positive(radius, "make_icosphere", "radius");
+
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  Triangle_soup soup;
+  const std::size_t final_vertices = 10 * (std::size_t(1) << (2 * subdivisions)) + 2;
+  soup.points.reserve(final_vertices);
+  const A::Vec3 ico[12] = {{{-1, t, 0}}, {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}},
+                           {{0, -1, t}}, {{0, 1, t}},  {{0, -1, -t}}, {{0, 1, -t}},
+                           {{t, 0, -1}}, {{t, 0, 1}},  {{-t, 0, -1}}, {{-t, 0, 1}}};
+  for (const A::Vec3& p : ico) soup.points.push_back(A::normalized(p, "icosahedron vertex"));
+  soup.triangles = {{{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}}, {{0, 10, 11}},
+                    {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}},
+                    {{3, 9, 4}},  {{3, 4, 2}},  {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},
+                    {{4, 9, 5}},  {{2, 4, 11}}, {{6, 2, 10}},  {{8, 6, 7}},  {{9, 8, 1}}};
+
+  for (int level = 0; level < subdivisions; ++level) {
+    std::unordered_map<std::uint64_t, int> midpoint;
+    midpoint.reserve(soup.triangles.size() * 3 / 2);
+    auto middle = [&](int a, int b) {
+      const std::uint64_t key = a < b ? A::directed_key(a, b) : A::directed_key(b, a);
+      const auto found = midpoint.find(key);
+      if (found != midpoint.end()) return found->second;
+      const A::Vec3 m = A::add(soup.points[std::size_t(a)], soup.points[std::size_t(b)]);
+      const int index = static_cast<int>(soup.points.size());
+      soup.points.push_back(A::normalized(m, "edge midpoint"));
+      midpoint.emplace(key, index);
+      return index;
+    };
+    std::vector<std::array<int, 3>> finer;
+    finer.reserve(4 * soup.triangles.size());
+    for (const auto& f : soup.triangles) {
+      const int ab = middle(f[0], f[1]), bc = middle(f[1], f[2]), ca = middle(f[2], f[0]);
+      finer.push_back({{f[0], ab, ca}});
+      finer.push_back({{f[1], bc, ab}});
+      finer.push_back({{f[2], ca, bc}});
+      finer.push_back({{ab, bc, ca}});
+    }
+    soup.triangles.swap(finer);
+  }
+  if (radius != 1.0)
+    for (auto& p : soup.points) p = A::scale(p, radius);
+  return soup;
+}
+
+/// Index of the vertex at lattice position (i, j) of `make_grid(nx, ny, ...)`
+/// (and of the height fields built on it): `j * (nx + 1) + i`, with i along x
+/// and j along y, both starting at the corner (-width/2, -height/2).
+inline std::size_t grid_vertex_index(int nx, int i, int j) {
+  return static_cast<std::size_t>(j) * static_cast<std::size_t>(nx + 1) +
+         static_cast<std::size_t>(i);
+}
+
+/// Index of the vertex at the origin of `make_grid(nx, ny, ...)`, i.e.
+/// `grid_vertex_index(nx, nx / 2, ny / 2)`. This vertex has valence 8 (all
+/// four diagonals meet there).
+/// \throws std::invalid_argument unless nx and ny are even and positive
+inline std::size_t grid_origin_vertex(int nx, int ny) {
+  internal::analytic::require(nx > 0 && ny > 0 && nx % 2 == 0 && ny % 2 == 0,
+                              "grid_origin_vertex: nx and ny must be even and positive");
+  return grid_vertex_index(nx, nx / 2, ny / 2);
+}
+
+/// Regular planar triangulation of the rectangle
+/// [-width/2, width/2] x [-height/2, height/2] in the plane z = 0.
+///
+/// The rectangle is cut into nx x ny cells, each split into two right
+/// triangles. Diagonals alternate in a checkerboard ("union jack") pattern:
+/// the four diagonals meet at every vertex (i, j) with i - nx/2 + j - ny/2
+/// even (valence 8), the others have valence 4. The mesh is therefore
+/// symmetric under x -> -x and y -> -y when nx and ny are even, and it is
+/// Delaunay (every cell is inscribed in a circle, so opposite angles sum to
+/// at most pi, exactly pi across the diagonals). Coordinates are computed so
+/// that symmetric vertices have exactly opposite coordinates.
+///
+/// Vertex ordering: row by row, `grid_vertex_index(nx, i, j) = j*(nx+1) + i`,
+/// (nx+1)(ny+1) vertices, 2 nx ny triangles (counter-clockwise seen from +z).
+/// When nx and ny are even, vertex `grid_origin_vertex(nx, ny)` is exactly
+/// at the origin.
+///
+/// \param nx number of cells along x, at least 1
+/// \param ny number of cells along y, at least 1
+/// \param width extent along x, positive
+/// \param height extent along y, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
+  namespace A = internal::analytic;
+  A::require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " +
+                                     std::to_string(nx) + ", " + std::to_string(ny) + ")");
+  A::require_positive(width, "make_grid", "width");
+  A::require_positive(height, "make_grid", "height");
+  A::require_vertex_budget(2.0 * (double(nx) + 1) * (double(ny) + 1), "make_grid");
+
+  Triangle_soup soup;
+  soup.points.reserve(std::size_t(nx + 1) * std::size_t(ny + 1));
+  for (int j = 0; j <= ny; ++j) {
+    const double y = height * double(2 * j - ny) / double(2 * ny);
+    for (int i = 0; i <= nx; ++i) {
+      const double x = width * double(2 * i - nx) / double(2 * nx);
+      soup.points.push_back({{x, y, 0.0}});
+    }
+  }
+  soup.triangles.reserve(2 * std::size_t(nx) * std::size_t(ny));
+  A::triangulate_lattice(
+      nx, ny, nx / 2 + ny / 2,
+      [nx](int i, int j) { return static_cast<int>(grid_vertex_index(nx, i, j)); },
+      soup.triangles);
+  return soup;
+}
+
+/// Perfectly regular planar mesh: a hexagonal patch of equilateral triangles
+/// of side `edge` in the plane z = 0, centred at the origin.
+///
+/// Vertex ordering: vertex 0 is the centre (at the origin, the source vertex);
+/// then ring k = 1..rings holds 6k vertices, listed counter-clockwise (seen
+/// from +z) starting with the vertex at (k * edge, 0, 0). Ring k starts at
+/// index 1 + 3k(k-1). There are 3 rings (rings + 1) + 1 vertices and
+/// 6 rings^2 triangles (counter-clockwise seen from +z); every interior
+/// vertex has valence 6.
+///
+/// \param rings number of rings around the central vertex, at least 1
+/// \param edge edge length, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_equilateral_grid(int rings, double edge) {
+  namespace A = internal::analytic;
+  A::require(rings >= 1, "make_equilateral_grid: rings must be at least 1 (got " +
+                             std::to_string(rings) + ")");
+  A::require_positive(edge, "make_equilateral_grid", "edge");
+  A::require_vertex_budget(6.0 * double(rings) * double(rings) + 3.0 * rings + 1,
+                           "make_equilateral_grid");
+
+  // Axial lattice coordinates (a, b): position a * (1, 0) + b * (1/2, sqrt(3)/2).
+  const int d[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
+  const int side = 2 * rings + 1;
+  std::vector<int> index(std::size_t(side) * std::size_t(side), -1);
+  auto slot = [&](int a, int b) -> int& {
+    return index[std::size_t(a + rings) * std::size_t(side) + std::size_t(b + rings)];
+  };
+  auto inside = [&](int a, int b) {
+    return std::abs(a) <= rings && std::abs(b) <= rings && std::abs(a + b) <= rings;
+  };
+  const double half_sqrt3 = std::sqrt(3.0) / 2.0;
+
+  Triangle_soup soup;
+  std::vector<std::array<int, 2>> axial;
+  auto add_vertex = [&](int a, int b) {
+    slot(a, b) = static_cast<int>(soup.points.size());
+    axial.push_back({{a, b}});
+    soup.points.push_back({{edge * double(2 * a + b) / 2.0, edge * double(b) * half_sqrt3, 0.0}});
+  };
+  add_vertex(0, 0);
+  for (int k = 1; k <= rings; ++k)
+    for (int s = 0; s < 6; ++s)
+      for (int step = 0; step < k; ++step)
+        add_vertex(k * d[s][0] + step * d[(s + 2) % 6][0], k * d[s][1] + step * d[(s + 2) % 6][1]);
+
+  soup.triangles.reserve(6 * std::size_t(rings) * std::size_t(rings));
+  // Each triangle is listed once, from its vertex (a, b) of smallest b then
+  // largest a: "up" triangles (a, b), (a + 1, b), (a, b + 1) and "down"
+  // triangles (a, b), (a, b + 1), (a - 1, b + 1).
+  for (const auto& ab : axial) {
+    const int a = ab[0], b = ab[1];
+    if (inside(a + 1, b) && inside(a, b + 1))
+      soup.triangles.push_back({{slot(a, b), slot(a + 1, b), slot(a, b + 1)}});
+    if (inside(a, b + 1) && inside(a - 1, b + 1))
+      soup.triangles.push_back({{slot(a, b), slot(a, b + 1), slot(a - 1, b + 1)}});
+  }
+  return soup;
+}
+
+/// Randomly flips edges of a triangle soup (the paper's "50% of the edges
+/// randomly flipped" meshes).
+///
+/// An interior edge {a, b} shared by the triangles (a, b, c) and (b, a, d) is
+/// flippable when c != d, the edge {c, d} does not already exist, and the
+/// quadrilateral a d b c is strictly convex (seen along the sum of the two
+/// triangle normals; tolerance 1e-10 on the sine of the new corner angles),
+/// so the flip keeps the surface embedded and, for planar meshes, keeps the
+/// total area. The flip replaces the two triangles by (a, d, c) and
+/// (d, b, c), reusing their slots in `soup.triangles`; points are not
+/// touched.
+///
+/// `round(fraction * E)` edges are flipped, where E is the number of interior
+/// edges that are flippable in the input. Candidates are visited in a random
+/// order (Fisher-Yates shuffle driven by `std::mt19937(seed)` raw output, so
+/// the result is identical on every platform); an edge is flipped if it is
+/// still flippable when visited, at most once, and edges created by flips
+/// are never flipped. If a pass ends short of the target, further passes
+/// over the still-unflipped candidates are made while they make progress
+/// (at most 100 passes), so fewer edges than requested may be flipped when
+/// too few remain flippable. Each flip makes the quadrilaterals of some
+/// neighbouring edges non-convex, so the process saturates: on
+/// `make_equilateral_grid()` (where every interior edge is initially
+/// flippable) it stops at about 46-47% of the interior edges, so fraction
+/// 0.5 yields ~0.47 there; check the returned count.
+///
+/// \param soup consistently oriented manifold triangle soup, modified in place
+/// \param fraction fraction of the initially flippable edges to flip, in [0, 1]
+/// \param seed seed of the `std::mt19937` generator
+/// \return the number of edges flipped
+/// \throws std::invalid_argument if fraction is outside [0, 1], an index is
+///         out of range, or a directed edge is used by two triangles
+inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsigned seed) {
+  namespace A = internal::analytic;
+  A::require(fraction >= 0.0 && fraction <= 1.0,
+             "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) +
+                 ")");
+  const int n = static_cast<int>(soup.points.size());
+  std::unordered_map<std::uint64_t, int> face_of;  // directed edge (u, v) -> face
+  face_of.reserve(3 * soup.triangles.size());
+  for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
+    const auto& t = soup.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      A::require(t[k] >= 0 && t[k] < n, "flip_random_edges: vertex index out of range");
+      A::require(t[k] != t[(k + 1) % 3], "flip_random_edges: degenerate triangle");
+      const bool inserted = face_of.emplace(A::directed_key(t[k], t[(k + 1) % 3]), int(f)).second;
+      A::require(inserted,
+                 "flip_random_edges: a directed edge is used twice (non-manifold or "
+                 "inconsistently oriented soup)");
+    }
+  }
+  auto face_at = [&](int u, int v) {
+    const auto it = face_of.find(A::directed_key(u, v));
+    return it == face_of.end() ? -1 : it->second;
+  };
+  auto opposite = [&](int f, int u, int v) {
+    const auto& t = soup.triangles[std::size_t(f)];
+    for (int k = 0; k < 3; ++k)
+      if (t[k] == u && t[(k + 1) % 3] == v) return t[(k + 2) % 3];
+    return -1;
+  };
+  // Returns true (and flips when `apply`) if edge {a, b} exists and is flippable.
+  auto try_flip = [&](int a, int b, bool apply) {
+    const int f1 = face_at(a, b), f2 = face_at(b, a);
+    if (f1 < 0 || f2 < 0) return false;
+    const int c = opposite(f1, a, b), d = opposite(f2, b, a);
+    if (c == d || face_at(c, d) >= 0 || face_at(d, c) >= 0) return false;
+    const auto& pa = soup.points[std::size_t(a)];
+    const auto& pb = soup.points[std::size_t(b)];
+    const auto& pc = soup.points[std::size_t(c)];
+    const auto& pd = soup.points[std::size_t(d)];
+    const A::Vec3 n1 = A::cross(A::sub(pb, pa), A::sub(pc, pa));
+    const A::Vec3 n2 = A::cross(A::sub(pa, pb), A::sub(pd, pb));
+    const double l1 = A::norm(n1), l2 = A::norm(n2);
+    if (!(l1 > 0) || !(l2 > 0)) return false;
+    const A::Vec3 normal = A::add(A::scale(n1, 1.0 / l1), A::scale(n2, 1.0 / l2));
+    const double ln = A::norm(normal);
+    if (!(ln > 1e-12)) return false;  // the two triangles fold onto each other
+    auto positive = [&](const A::Vec3& p, const A::Vec3& q, const A::Vec3& r) {
+      const A::Vec3 u = A::sub(q, p), v = A::sub(r, p);
+      return A::dot(A::cross(u, v), normal) > 1e-10 * ln * A::norm(u) * A::norm(v);
+    };
+    if (!positive(pa, pd, pc) || !positive(pd, pb, pc)) return false;
+    if (!apply) return true;
+    soup.triangles[std::size_t(f1)] = {{a, d, c}};
+    soup.triangles[std::size_t(f2)] = {{d, b, c}};
+    face_of.erase(A::directed_key(a, b));
+    face_of.erase(A::directed_key(b, a));
+    face_of[A::directed_key(a, d)] = f1;
+    face_of[A::directed_key(d, c)] = f1;
+    face_of[A::directed_key(c, a)] = f1;
+    face_of[A::directed_key(d, b)] = f2;
+    face_of[A::directed_key(b, c)] = f2;
+    face_of[A::directed_key(c, d)] = f2;
+    return true;
+  };
+
+  // Candidates in a deterministic order: faces in order, edges (a < b) in
+  // corner order, each interior edge once.
+  std::vector<std::array<int, 2>> candidates;
+  for (const auto& t : soup.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[k], b = t[(k + 1) % 3];
+      if (a < b && try_flip(a, b, false)) candidates.push_back({{a, b}});
+    }
+  const std::size_t target = static_cast<std::size_t>(
+      std::llround(fraction * static_cast<double>(candidates.size())));
+  if (target == 0) return 0;
+
+  std::mt19937 generator(seed);
+  for (std::size_t i = candidates.size() - 1; i > 0; --i) {
+    const std::size_t j = A::uniform_below(generator, static_cast<std::uint32_t>(i + 1));
+    std::swap(candidates[i], candidates[j]);
+  }
+  std::vector<char> done(candidates.size(), 0);
+  std::size_t flipped = 0;
+  for (int pass = 0; pass < 100 && flipped < target; ++pass) {
+    const std::size_t before = flipped;
+    for (std::size_t k = 0; k < candidates.size() && flipped < target; ++k) {
+      if (done[k]) continue;
+      if (try_flip(candidates[k][0], candidates[k][1], true)) {
+        done[k] = 1;
+        ++flipped;
+      }
+    }
+    if (flipped == before) break;
+  }
+  return flipped;
+}
+
+/// Scales every point: (x, y, z) -> (sx x, sy y, sz z). Triangles are kept;
+/// positive factors keep the orientation.
+///
+/// \param soup soup modified in place
+/// \param sx,sy,sz scale factors, positive and finite
+/// \throws std::invalid_argument if a factor is not positive
+inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, double sz) {
+  namespace A = internal::analytic;
+  A::require_positive(sx, "scale_anisotropically", "sx");
+  A::require_positive(sy, "scale_anisotropically", "sy");
+  A::require_positive(sz, "scale_anisotropically", "sz");
+  for (auto& p : soup.points) {
+    p[0] *= sx;
+    p[1] *= sy;
+    p[2] *= sz;
+  }
+}
+
+// Height field z = f(x, y) on make_grid(n, n, 2 half_width, 2 half_width).
+namespace internal {
+namespace analytic {
+
+template <class Height>
+Triangle_soup make_height_field(int n, double half_width, Height f, const char* function) {
+  require(n >= 2 && n % 2 == 0,
+          std::string(function) + ": n must be even and at least 2 (got " + std::to_string(n) + ")");
+  require_positive(half_width, function, "half_width");
+  Triangle_soup soup = make_grid(n, n, 2.0 * half_width, 2.0 * half_width);
+  for (auto& p : soup.points) p[2] = f(p[0], p[1]);
+  return soup;
+}
+
+}  // namespace analytic
+}  // namespace internal
+
+/// Gaussian bump: the height field z = amplitude * exp(-(x^2 + y^2) / (2 sigma^2))
+/// over the square [-half_width, half_width]^2, sampled on the grid of
+/// `make_grid(n, n, 2 half_width, 2 half_width)` (same vertex ordering and
+/// union-jack diagonals, triangles counter-clockwise seen from +z).
+///
+/// The apex (0, 0, amplitude) is vertex `grid_origin_vertex(n, n)`
+/// = (n/2)(n+2), which has valence 8; use it as the source for
+/// `gaussian_bump_exponential_map()`.
+///
+/// \param n number of cells per side, even and at least 2
+/// \param half_width half side of the square domain, positive
+/// \param amplitude height of the apex, finite (negative gives a dent)
+/// \param sigma standard deviation of the Gaussian, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitude,
+                                        double sigma) {
+  namespace A = internal::analytic;
+  A::require_finite(amplitude, "make_gaussian_bump", "amplitude");
+  A::require_positive(sigma, "make_gaussian_bump", "sigma");
+  const double inv = 1.0 / (2.0 * sigma * sigma);
+  return internal::analytic::make_height_field(
+      n, half_width,
+      [=](double x, double y) { return amplitude * std::exp(-(x * x + y * y) * inv); },
+      "make_gaussian_bump");
+}
+
+/// Saddle: the height field z = amplitude * sin(x) * sin(y) over the square
+/// [-half_width, half_width]^2, sampled on the grid of
+/// `make_grid(n, n, 2 half_width, 2 half_width)` (same vertex ordering,
+/// triangles counter-clockwise seen from +z).
+///
+/// The saddle point (0, 0, 0) is vertex `grid_origin_vertex(n, n)`
+/// = (n/2)(n+2). There is no closed-form exponential map for this surface.
+///
+/// \param n number of cells per side, even and at least 2
+/// \param half_width half side of the square domain, positive
+/// \param amplitude amplitude of the sine product, finite
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
+  internal::analytic::require_finite(amplitude, "make_saddle", "amplitude");
+  return internal::analytic::make_height_field(
+      n, half_width, [=](double x, double y) { return amplitude * std::sin(x) * std::sin(y); },
+      "make_saddle");
+}
+
+/// Open cylinder of axis z (two boundary loops), radius `radius`, spanning
+/// z in [-length/2, length/2].
+///
+/// Vertex ordering: ring j = 0..along (at z = length (j/along - 1/2)) holds
+/// `around` vertices; vertex `j * around + i` is at angle 2 pi i / around
+/// (counter-clockwise about +z, i = 0 on the +x axis). When `along` is even,
+/// vertex `(along / 2) * around` is exactly at (radius, 0, 0): the natural
+/// source. Each quad is split by a diagonal alternating in a checkerboard
+/// pattern (perfectly alternating when `around` is even), arranged so that
+/// the four diagonals meet at that source vertex (valence 8). There are
+/// (along + 1) around vertices and 2 around along triangles, oriented
+/// counter-clockwise seen from outside (away from the axis).
+///
+/// \param around number of vertices per ring, at least 3
+/// \param along number of quad rows along the axis, at least 1
+/// \param radius cylinder radius, positive
+/// \param length cylinder length, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_cylinder(int around, int along, double radius, double length) {
+  namespace A = internal::analytic;
+  A::require(around >= 3, "make_cylinder: around must be at least 3 (got " +
+                              std::to_string(around) + ")");
+  A::require(along >= 1, "make_cylinder: along must be at least 1 (got " +
+                             std::to_string(along) + ")");
+  A::require_positive(radius, "make_cylinder", "radius");
+  A::require_positive(length, "make_cylinder", "length");
+  A::require_vertex_budget(2.0 * double(around) * (double(along) + 1), "make_cylinder");
+
+  const double two_pi = 2.0 * std::acos(-1.0);
+  Triangle_soup soup;
+  soup.points.reserve(std::size_t(along + 1) * std::size_t(around));
+  for (int j = 0; j <= along; ++j) {
+    const double z = length * double(2 * j - along) / double(2 * along);
+    for (int i = 0; i < around; ++i) {
+      const double phi = two_pi * double(i) / double(around);
+      soup.points.push_back({{radius * std::cos(phi), radius * std::sin(phi), z}});
+    }
+  }
+  soup.triangles.reserve(2 * std::size_t(around) * std::size_t(along));
+  // Parity along/2: the source vertex (along/2) * around has valence 8.
+  A::triangulate_lattice(
+      around, along, along / 2, [around](int i, int j) { return j * around + i % around; },
+      soup.triangles);
+  return soup;
+}
+
+/// Open cone with its apex as a vertex (not truncated).
+///
+/// The apex is vertex 0, at the origin; the axis is +z and the cone opens
+/// upwards: a point at slant distance s from the apex and azimuth phi is
+/// (s sin(alpha) cos(phi), s sin(alpha) sin(phi), s cos(alpha)) with
+/// alpha = apex_angle / 2. Vertex ordering: ring j = 1..along (at slant
+/// distance s = length j / along, so `length` is the length of the
+/// generators) holds `around` vertices, vertex `1 + (j - 1) * around + i`
+/// being at azimuth 2 pi i / around. The apex is joined to ring 1 by a fan;
+/// quads between rings are split with alternating diagonals. There are
+/// 1 + along around vertices and around (2 along - 1) triangles, oriented
+/// counter-clockwise seen from outside (away from the axis). The surface is
+/// intrinsically flat except at the apex, whose total angle is
+/// 2 pi sin(alpha).
+///
+/// \param around number of vertices per ring, at least 3
+/// \param along number of rings, at least 1
+/// \param apex_angle full opening angle (between opposite generators), in (0, pi)
+/// \param length slant length of the generators, positive
+/// \throws std::invalid_argument if a parameter is out of range
+inline Triangle_soup make_cone(int around, int along, double apex_angle, double length) {
+  namespace A = internal::analytic;
+  const double pi = std::acos(-1.0);
+  A::require(around >= 3,
+             "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
+  A::require(along >= 1,
+             "make_cone: along must be at least 1 (got " + std::to_string(along) + ")");
+  A::require(std::isfinite(apex_angle) && apex_angle > 0 && apex_angle < pi,
+             "make_cone: apex_angle must be in (0, pi) (got " + std::to_string(apex_angle) + ")");
+  A::require_positive(length, "make_cone", "length");
+  A::require_vertex_budget(2.0 * double(around) * double(along) + 1, "make_cone");
+
+  const double alpha = 0.5 * apex_angle;
+  Triangle_soup soup;
+  soup.points.reserve(1 + std::size_t(along) * std::size_t(around));
+  soup.points.push_back({{0.0, 0.0, 0.0}});
+  for (int j = 1; j <= along; ++j) {
+    const double s = length * double(j) / double(along);
+    for (int i = 0; i < around; ++i) {
+      const double phi = 2.0 * pi * double(i) / double(around);
+      soup.points.push_back({{s * std::sin(alpha) * std::cos(phi),
+                              s * std::sin(alpha) * std::sin(phi), s * std::cos(alpha)}});
+    }
+  }
+  soup.triangles.reserve(std::size_t(around) * std::size_t(2 * along - 1));
+  auto ring = [around](int i, int j) { return 1 + (j - 1) * around + i % around; };
+  for (int i = 0; i < around; ++i) soup.triangles.push_back({{0, ring(i + 1, 1), ring(i, 1)}});
+  A::triangulate_lattice(
+      around, along - 1, 0, [&](int i, int j) { return ring(i, j + 1); }, soup.triangles);
+  return soup;
+}
+
+/// Index of the vertex closest (Euclidean distance) to `p`; ties go to the
+/// smallest index.
+/// \throws std::invalid_argument if the soup has no points
+inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<double, 3>& p) {
+  namespace A = internal::analytic;
+  A::require(!soup.points.empty(), "closest_vertex: the soup has no points");
+  std::size_t best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < soup.points.size(); ++i) {
+    const A::Vec3 d = A::sub(soup.points[i], p);
+    const double squared = A::dot(d, d);
+    if (squared < best_distance) {
+      best_distance = squared;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/// Builds a CGAL polygon mesh from a triangle soup with
+/// `CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh()`.
+///
+/// Vertex i of the soup becomes the i-th vertex of `mesh` (in the order of
+/// `vertices(mesh)`; for a `CGAL::Surface_mesh` it has index i), and the
+/// faces are added in the order of `soup.triangles` with the same
+/// orientation.
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal
+///         `CGAL::vertex_point_t` property map whose point type is
+///         constructible from three doubles
+/// \param soup the triangles, which must form a consistently oriented
+///        manifold surface (`is_polygon_soup_a_polygon_mesh()`)
+/// \param mesh output; must be empty (a freshly constructed mesh, or one
+///        cleared with its `clear()` member, so that no garbage shifts the
+///        vertex indices)
+/// \throws std::invalid_argument if `mesh` is not empty, an index is out of
+///         range, or the soup is not a polygon mesh
+template <class PolygonMesh>
+void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
+  namespace A = internal::analytic;
+  A::require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
+  std::vector<std::array<std::size_t, 3>> polygons;
+  polygons.reserve(soup.triangles.size());
+  const int n = static_cast<int>(soup.points.size());
+  for (const auto& t : soup.triangles) {
+    for (int k = 0; k < 3; ++k)
+      A::require(t[k] >= 0 && t[k] < n, "soup_to_mesh: vertex index out of range");
+    polygons.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
+  }
+  A::require(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
+             "soup_to_mesh: the soup is not a consistently oriented manifold polygon mesh");
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, polygons, mesh);
+}
+
+// ---------------------------------------------------------------------------
+// Exact exponential maps
+// ---------------------------------------------------------------------------
+
+/// Exact exponential map of the sphere of radius `radius` centred at the
+/// origin.
+///
+/// `source` and `p` are projected radially onto the sphere. The distance is
+/// `radius * angle(source, p)` (computed with atan2, accurate everywhere).
+/// The angle is that of the initial direction of the minimizing great
+/// circle from the source, measured from `e1` (projected onto the tangent
+/// plane at the source) counter-clockwise about the outward normal
+/// n = source / |source|. At the antipode the direction is undefined (the
+/// returned angle is then meaningless, r = pi radius).
+///
+/// \param source source point (non-zero)
+/// \param p query point (non-zero)
+/// \param radius sphere radius, positive
+/// \param e1 angular reference direction, not parallel to the normal at the source
+/// \throws std::invalid_argument for zero points, a non-positive radius or a bad e1
+inline Polar sphere_exponential_map(const std::array<double, 3>& source,
+                                    const std::array<double, 3>& p, double radius,
+                                    const std::array<double, 3>& e1) {
+  namespace A = internal::analytic;
+  A::require_positive(radius, "sphere_exponential_map", "radius");
+  const A::Vec3 n = A::normalized(source, "sphere_exponential_map: source");
+  const A::Vec3 q = A::normalized(p, "sphere_exponential_map: p");
+  const double angle = std::atan2(A::norm(A::cross(n, q)), A::dot(n, q));
+  Polar result;
+  result.r = radius * angle;
+  // The log direction is the tangential part of q; its normal part does not
+  // change the angle.
+  const double theta = A::tangent_angle(q, n, e1, "sphere_exponential_map");
+  result.theta_unrotated = angle > 0 ? theta : 0.0;
+  return result;
+}
+
+/// Exact exponential map of the plane z = 0 (normal +z).
+///
+/// `source` and `p` are projected onto the plane (their z is ignored);
+/// r = |p - source| and the angle is measured from `e1` (projected onto the
+/// plane) counter-clockwise about +z, i.e. in the frame (e1, e2 = z x e1).
+///
+/// \throws std::invalid_argument if e1 is zero or vertical
+inline Polar plane_exponential_map(const std::array<double, 3>& source,
+                                   const std::array<double, 3>& p,
+                                   const std::array<double, 3>& e1) {
+  namespace A = internal::analytic;
+  const A::Vec3 d = {{p[0] - source[0], p[1] - source[1], 0.0}};
+  Polar result;
+  result.r = std::hypot(d[0], d[1]);
+  const double theta = A::tangent_angle(d, {{0.0, 0.0, 1.0}}, e1, "plane_exponential_map");
+  result.theta_unrotated = result.r > 0 ? theta : 0.0;
+  return result;
+}
+
+/// Exact exponential map of the infinite cylinder of axis z (through the
+/// origin) and radius `radius`, computed by unrolling.
+///
+/// `source` and `p` are projected radially onto the cylinder (only their
+/// azimuths and heights are used). With dphi the azimuth difference wrapped
+/// to (-pi, pi] and dz the height difference, the unrolled vector is
+/// (radius dphi, dz) in the tangent frame (azimuthal direction, +z) at the
+/// source: r = hypot(radius dphi, dz) and the angle is measured from `e1`
+/// (projected onto the tangent plane) counter-clockwise about the outward
+/// normal (away from the axis). This is the minimizing geodesic, valid as
+/// long as it does not wrap more than half the circumference.
+///
+/// \throws std::invalid_argument if radius is not positive, a point is on
+///         the axis, or e1 is zero or parallel to the normal
+inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
+                                      const std::array<double, 3>& p, double radius,
+                                      const std::array<double, 3>& e1) {
+  namespace A = internal::analytic;
+  A::require_positive(radius, "cylinder_exponential_map", "radius");
+  A::require(std::hypot(source[0], source[1]) > 0 && std::hypot(p[0], p[1]) > 0,
+             "cylinder_exponential_map: points must not lie on the axis");
+  const double pi = std::acos(-1.0);
+  const double phi_s = std::atan2(source[1], source[0]);
+  double dphi = std::atan2(p[1], p[0]) - phi_s;
+  if (dphi > pi) dphi -= 2 * pi;
+  if (dphi <= -pi) dphi += 2 * pi;
+  const double u = radius * dphi, v = p[2] - source[2];
+  const A::Vec3 n = {{std::cos(phi_s), std::sin(phi_s), 0.0}};
+  const A::Vec3 azimuthal = {{-std::sin(phi_s), std::cos(phi_s), 0.0}};
+  const A::Vec3 d = A::add(A::scale(azimuthal, u), {{0.0, 0.0, v}});
+  Polar result;
+  result.r = std::hypot(u, v);
+  const double theta = A::tangent_angle(d, n, e1, "cylinder_exponential_map");
+  result.theta_unrotated = result.r > 0 ? theta : 0.0;
+  return result;
+}
+
+/// Length of the meridian of the Gaussian bump z = A exp(-rho^2 / (2 sigma^2))
+/// from the apex to the parallel of radius `rho`, i.e. the integral of
+/// sqrt(1 + z'(t)^2) over [0, rho].
+///
+/// Computed with composite 5-point Gauss-Legendre quadrature, doubling the
+/// number of panels until two successive results agree to 1e-13 relative
+/// (the integrand is analytic, so the result is accurate to ~1e-13, far below
+/// the required 1e-10).
+///
+/// \throws std::invalid_argument if rho is negative or sigma not positive
+inline double gaussian_bump_meridian_length(double rho, double amplitude, double sigma) {
+  namespace A = internal::analytic;
+  A::require(std::isfinite(rho) && rho >= 0,
+             "gaussian_bump_meridian_length: rho must be non-negative and finite");
+  A::require_finite(amplitude, "gaussian_bump_meridian_length", "amplitude");
+  A::require_positive(sigma, "gaussian_bump_meridian_length", "sigma");
+  if (rho == 0) return 0;
+  // Panels about sigma / 4 wide, and narrow enough for steep flanks.
+  const double steepness = 1.0 + std::abs(amplitude) / sigma;
+  std::size_t panels =
+      static_cast<std::size_t>(std::ceil(std::min(4.0 * rho / sigma * steepness, 1e4))) + 1;
+  double previous = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
+  for (int refinement = 0; refinement < 12; ++refinement) {
+    panels *= 2;
+    const double current = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
+    if (std::abs(current - previous) <= 1e-13 * current) return current;
+    previous = current;
+  }
+  return previous;
+}
+
+/// Exact exponential map of the Gaussian bump
+/// z = amplitude exp(-(x^2 + y^2) / (2 sigma^2)) with the source at the apex
+/// (0, 0, amplitude) (vertex `grid_origin_vertex(n, n)` of
+/// `make_gaussian_bump()`).
+///
+/// The bump is a surface of revolution and the source is its pole, so the
+/// geodesics from the source are the meridians: r is the meridian arc length
+/// `gaussian_bump_meridian_length(hypot(x, y), amplitude, sigma)` and the
+/// angle is the azimuth of (x, y) measured from `e1` counter-clockwise about
+/// +z (the tangent plane at the apex is horizontal; `e1` is projected onto
+/// it). Only the x and y coordinates of `p` are used.
+///
+/// \throws std::invalid_argument if sigma is not positive or e1 is zero or vertical
+inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, double amplitude,
+                                           double sigma, const std::array<double, 3>& e1) {
+  namespace A = internal::analytic;
+  const double rho = std::hypot(p[0], p[1]);
+  Polar result;
+  result.r = gaussian_bump_meridian_length(rho, amplitude, sigma);
+  const double theta = A::tangent_angle({{p[0], p[1], 0.0}}, {{0.0, 0.0, 1.0}}, e1,
+                                        "gaussian_bump_exponential_map");
+  result.theta_unrotated = rho > 0 ? theta : 0.0;
+  return result;
+}
+
+}  // namespace expmap
+
+#endif  // EXPMAP_ANALYTIC_SURFACES_H

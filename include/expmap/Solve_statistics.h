@@ -1,0 +1,32 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_SOLVE_STATISTICS_H
+#define EXPMAP_SOLVE_STATISTICS_H
+
+/// \file Solve_statistics.h
+/// What a localized solve touched, for the performance studies.
+
+#include <cstddef>
+
+namespace expmap {
+
+/// \ingroup PkgExpmapRef
+/// Work done by localized triangular solves: nodes of the elimination tree
+/// visited by forward and back substitution and the factor entries streamed.
+/// A query's cost is proportional to `factor_entries`.
+struct Solve_statistics {
+  std::size_t forward_nodes = 0;   ///< columns of L visited by L y = b
+  std::size_t backward_nodes = 0;  ///< columns of L visited by L^T x = y
+  std::size_t factor_entries = 0;  ///< stored entries of L read, both passes
+
+  Solve_statistics& operator+=(const Solve_statistics& other) {
+    forward_nodes += other.forward_nodes;
+    backward_nodes += other.backward_nodes;
+    factor_entries += other.factor_entries;
+    return *this;
+  }
+};
+
+}  // namespace expmap
+
+#endif  // EXPMAP_SOLVE_STATISTICS_H

@@ -1,0 +1,188 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_MESH_ARRAYS_H
+#define EXPMAP_INTERNAL_MESH_ARRAYS_H
+
+#include <expmap/Errors.h>
+#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/Vector3.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// Flat, index-based copy of a triangle mesh: what every algorithm in the
+/// package works on, built once from any CGAL FaceGraph.
+///
+/// Vertex i is the i-th vertex of `vertices(tm)`; face f the f-th of
+/// `faces(tm)` with its corners in halfedge order (counter-clockwise for an
+/// outward-oriented mesh).
+struct Mesh_arrays {
+  std::vector<Vector3> point;
+  std::vector<std::array<int, 3>> face;
+  std::vector<int> vertex_face_start, vertex_face;  // vertex -> incident faces (CSR)
+  std::vector<int> neighbor_start, neighbor;        // vertex -> adjacent vertices (CSR)
+  std::vector<int> component;                       // connected component of each vertex
+  std::vector<int> component_size;
+  double mean_edge_length = 0;
+
+  std::size_t number_of_vertices() const { return point.size(); }
+  bool is_isolated(int v) const { return vertex_face_start[v] == vertex_face_start[v + 1]; }
+  int degree(int v) const { return neighbor_start[v + 1] - neighbor_start[v]; }
+
+  /// Edge lengths of the input mesh as an intrinsic triangulation.
+  Intrinsic_triangulation intrinsic_triangulation() const {
+    Intrinsic_triangulation t;
+    t.number_of_vertices = point.size();
+    t.face = face;
+    t.length.resize(face.size());
+    for (std::size_t f = 0; f < face.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+        t.length[f][k] = norm(point[face[f][(k + 1) % 3]] - point[face[f][k]]);
+    return t;
+  }
+};
+
+// Compressed rows from per-row lists built by `fill(row, push)`.
+template <class Fill>
+void build_compressed_rows(std::size_t rows, const std::vector<int>& counts, Fill fill,
+                           std::vector<int>& start, std::vector<int>& entries) {
+  start.assign(rows + 1, 0);
+  for (std::size_t r = 0; r < rows; ++r) start[r + 1] = start[r] + counts[r];
+  entries.assign(static_cast<std::size_t>(start[rows]), 0);
+  std::vector<int> cursor(start.begin(), start.end() - 1);
+  fill([&](int row, int value) { entries[cursor[row]++] = value; });
+}
+
+inline void compute_adjacency(Mesh_arrays& m) {
+  const std::size_t n = m.point.size();
+  std::vector<int> counts(n, 0);
+  for (const auto& f : m.face)
+    for (int v : f) ++counts[v];
+  build_compressed_rows(
+      n, counts,
+      [&](auto push) {
+        for (std::size_t f = 0; f < m.face.size(); ++f)
+          for (int v : m.face[f]) push(v, static_cast<int>(f));
+      },
+      m.vertex_face_start, m.vertex_face);
+
+  // Neighbours: the other two corners of every incident face, deduplicated.
+  m.neighbor_start.assign(n + 1, 0);
+  m.neighbor.clear();
+  m.neighbor.reserve(3 * m.face.size());
+  std::vector<int> candidates;
+  for (std::size_t v = 0; v < n; ++v) {
+    candidates.clear();
+    for (int p = m.vertex_face_start[v]; p < m.vertex_face_start[v + 1]; ++p)
+      for (int w : m.face[m.vertex_face[p]])
+        if (w != static_cast<int>(v)) candidates.push_back(w);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    m.neighbor.insert(m.neighbor.end(), candidates.begin(), candidates.end());
+    m.neighbor_start[v + 1] = static_cast<int>(m.neighbor.size());
+  }
+
+  double total = 0;
+  std::size_t edges = 0;
+  for (std::size_t v = 0; v < n; ++v)
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
+      if (m.neighbor[p] > static_cast<int>(v)) {
+        total += norm(m.point[m.neighbor[p]] - m.point[v]);
+        ++edges;
+      }
+  m.mean_edge_length = edges > 0 ? total / static_cast<double>(edges) : 0.0;
+
+  // Components by breadth-first search over the neighbour lists.
+  m.component.assign(n, -1);
+  m.component_size.clear();
+  std::vector<int> queue;
+  for (std::size_t seed = 0; seed < n; ++seed) {
+    if (m.component[seed] != -1) continue;
+    const int id = static_cast<int>(m.component_size.size());
+    queue.assign(1, static_cast<int>(seed));
+    m.component[seed] = id;
+    for (std::size_t head = 0; head < queue.size(); ++head)
+      for (int p = m.neighbor_start[queue[head]]; p < m.neighbor_start[queue[head] + 1]; ++p)
+        if (m.component[m.neighbor[p]] == -1) {
+          m.component[m.neighbor[p]] = id;
+          queue.push_back(m.neighbor[p]);
+        }
+    m.component_size.push_back(static_cast<int>(queue.size()));
+  }
+}
+
+/// Rejects faces whose area is negligible against their longest edge: their
+/// cotangents are unbounded and no Laplacian built from them is meaningful.
+inline void check_face_shapes(const Mesh_arrays& m) {
+  for (std::size_t f = 0; f < m.face.size(); ++f) {
+    const auto& c = m.face[f];
+    const Vector3 e1 = m.point[c[1]] - m.point[c[0]];
+    const Vector3 e2 = m.point[c[2]] - m.point[c[0]];
+    const Vector3 e3 = m.point[c[2]] - m.point[c[1]];
+    const double longest2 = std::max({squared_norm(e1), squared_norm(e2), squared_norm(e3)});
+    const double twice_area = norm(cross(e1, e2));
+    if (!(twice_area > 1e-10 * longest2))
+      throw Invalid_input("face " + std::to_string(f) + " (vertices " + std::to_string(c[0]) +
+                          ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+                          ") is degenerate (zero area); remove it first, e.g. with "
+                          "CGAL::Polygon_mesh_processing::remove_degenerate_faces()");
+  }
+}
+
+/// Copies and validates a CGAL FaceGraph: it must be non-empty, made of
+/// triangles with three distinct vertices, and every coordinate finite.
+/// \throws Invalid_input naming the first offending vertex or face.
+template <class TriangleMesh, class VertexPointMap, class VertexIndexMap>
+Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim) {
+  Mesh_arrays m;
+  const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
+  if (n == 0 || faces(tm).first == faces(tm).second)
+    throw Invalid_input("the mesh is empty (it has no vertex or no face)");
+  m.point.resize(n);
+  for (auto v : vertices(tm)) {
+    const auto& p = get(vpm, v);
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    m.point[i] = Vector3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    if (!std::isfinite(m.point[i][0]) || !std::isfinite(m.point[i][1]) ||
+        !std::isfinite(m.point[i][2]))
+      throw Invalid_input("vertex " + std::to_string(i) +
+                          " has a non-finite coordinate (NaN or infinity)");
+  }
+  std::size_t f_index = 0;
+  for (auto f : faces(tm)) {
+    std::array<int, 3> corners{{-1, -1, -1}};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      if (k < 3) corners[k] = static_cast<int>(get(vim, v));
+      ++k;
+    }
+    if (k != 3)
+      throw Invalid_input("face " + std::to_string(f_index) + " has " + std::to_string(k) +
+                          " vertices; the mesh must be triangulated first, e.g. with "
+                          "CGAL::Polygon_mesh_processing::triangulate_faces()");
+    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2])
+      throw Invalid_input("face " + std::to_string(f_index) + " repeats a vertex");
+    m.face.push_back(corners);
+    ++f_index;
+  }
+  check_face_shapes(m);
+  compute_adjacency(m);
+  return m;
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_MESH_ARRAYS_H

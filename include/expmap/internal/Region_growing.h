@@ -1,0 +1,87 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_REGION_GROWING_H
+#define EXPMAP_INTERNAL_REGION_GROWING_H
+
+#include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Vector3.h>
+
+#include <cstdint>
+#include <functional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// Marks vertices of the current query without clearing an O(n) array per
+/// query: a vertex is marked when its stamp equals the current one.
+class Vertex_marks {
+ public:
+  void resize(std::size_t n) {
+    m_stamp.assign(n, 0);
+    m_value.assign(n, 0);
+    m_current = 0;
+  }
+  void next_query() {
+    if (++m_current == 0) {
+      std::fill(m_stamp.begin(), m_stamp.end(), 0);
+      m_current = 1;
+    }
+  }
+  bool is_marked(int v) const { return m_stamp[v] == m_current; }
+  void mark(int v, int value) {
+    m_stamp[v] = m_current;
+    m_value[v] = value;
+  }
+  /// The value stored with a marked vertex.
+  int value(int v) const { return m_value[v]; }
+
+ private:
+  std::vector<std::uint32_t> m_stamp;
+  std::vector<int> m_value;
+  std::uint32_t m_current = 0;
+};
+
+/// Dijkstra over the mesh edges (Euclidean edge lengths) from `source`,
+/// appending settled vertices to `region` nearest first and marking each
+/// with its position in `region`. Stops before the first vertex for which
+/// `keep(vertex, graph_distance, region_size)` is false. Only the visited
+/// part of the mesh is touched.
+template <class Keep>
+void grow_region(const Mesh_arrays& m, int source, Vertex_marks& in_region,
+                 Vertex_marks& seen, std::vector<double>& tentative, std::vector<int>& region,
+                 Keep keep) {
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  region.clear();
+  in_region.next_query();
+  seen.next_query();
+  seen.mark(source, 0);
+  tentative[source] = 0;
+  heap.push({0.0, source});
+  while (!heap.empty()) {
+    const auto [d, v] = heap.top();
+    heap.pop();
+    if (in_region.is_marked(v) || d > tentative[v]) continue;
+    if (!keep(v, d, region.size())) break;
+    in_region.mark(v, static_cast<int>(region.size()));
+    region.push_back(v);
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
+      const int w = m.neighbor[p];
+      if (in_region.is_marked(w)) continue;
+      const double dw = d + norm(m.point[w] - m.point[v]);
+      if (!seen.is_marked(w) || dw < tentative[w]) {
+        seen.mark(w, 0);
+        tentative[w] = dw;
+        heap.push({dw, w});
+      }
+    }
+  }
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_REGION_GROWING_H
