@@ -350,7 +350,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
       std::array<double, 3> u;
       for (int k = 0; k < 3; ++k)
         u[k] = ws.heat[ws.heat_row[static_cast<std::size_t>(ws.in_region.value(c[k]))] * width];
-      const auto div = internal::normalized_gradient_divergence(m_tri.length[f], m_shapes[f], u);
+      const auto div = internal::normalized_gradient_divergence(m_shapes[f], u);
       for (int k = 0; k < 3; ++k) ws.divergence[ws.in_region.value(c[k])] += div[k];
     }
   }

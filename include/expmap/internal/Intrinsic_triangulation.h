@@ -40,6 +40,9 @@ struct Intrinsic_triangulation {
 struct Triangle_shape {
   double area = 0;
   std::array<double, 3> cotangent{{0, 0, 0}};
+  /// Planar layout: corner 0 at the origin, corner 1 at (x1, 0), corner 2 at
+  /// (x2, y2) with y2 > 0, stored as {x1, x2, y2}.
+  std::array<double, 3> layout{{0, 0, 0}};
 };
 
 /// Area and corner cotangents from edge lengths, robust for slivers.
@@ -69,15 +72,10 @@ inline Triangle_shape triangle_shape(const std::array<double, 3>& l) {
     shape.cotangent[k] =
         (adjacent1 * adjacent1 + adjacent2 * adjacent2 - opposite * opposite) * inv4A;
   }
+  // The height from the area is accurate even for slivers.
+  shape.layout = {{l[0], (l[0] * l[0] + l[2] * l[2] - l[1] * l[1]) / (2.0 * l[0]),
+                   2.0 * shape.area / l[0]}};
   return shape;
-}
-
-/// Planar layout of a triangle from its edge lengths: corner 0 at the origin,
-/// corner 1 on the positive x axis, corner 2 in the upper half plane.
-inline std::array<std::array<double, 2>, 3> triangle_layout(const std::array<double, 3>& l) {
-  const double x2 = (l[0] * l[0] + l[2] * l[2] - l[1] * l[1]) / (2.0 * l[0]);
-  const double y2 = std::sqrt(std::max(0.0, l[2] * l[2] - x2 * x2));
-  return {{{{0.0, 0.0}}, {{l[0], 0.0}}, {{x2, y2}}}};
 }
 
 }  // namespace internal

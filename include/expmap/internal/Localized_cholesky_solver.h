@@ -57,7 +57,11 @@ class Localized_cholesky_solver {
    private:
     friend class Localized_cholesky_solver;
     void resize(int n) {
-      m_block.assign(static_cast<std::size_t>(n) * max_block_width, 0.0);
+      // Rows of the block start on cache lines (a row of 8 doubles is one line).
+      constexpr std::size_t line = 64 / sizeof(double);
+      m_storage.assign(static_cast<std::size_t>(n) * max_block_width + line, 0.0);
+      const auto address = reinterpret_cast<std::uintptr_t>(m_storage.data());
+      m_block = m_storage.data() + (line - (address / sizeof(double)) % line) % line;
       m_forward_stamp.assign(static_cast<std::size_t>(n), 0);
       m_backward_stamp.assign(static_cast<std::size_t>(n), 0);
       m_stamp = 0;
@@ -70,7 +74,8 @@ class Localized_cholesky_solver {
       }
       return m_stamp;
     }
-    std::vector<double> m_block;
+    std::vector<double> m_storage;
+    double* m_block = nullptr;  // m_storage, aligned
     std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
     std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
     std::uint32_t m_stamp = 0;
@@ -200,7 +205,7 @@ class Localized_cholesky_solver {
     const int* colp = m_factor.column_start;
     const int* rowi = m_factor.row_index;
     const double* val = m_factor.value;
-    double* y = ws.m_block.data();  // row-major n x W, zero on entry and exit
+    double* y = ws.m_block;  // row-major n x W, zero on entry and exit
     Solve_statistics stats;
 
     // Scatter b (permuted) into the block and find the forward node set.

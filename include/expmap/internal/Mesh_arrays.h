@@ -33,6 +33,7 @@ struct Mesh_arrays {
   std::vector<std::array<int, 3>> face;
   std::vector<int> vertex_face_start, vertex_face;  // vertex -> incident faces (CSR)
   std::vector<int> neighbor_start, neighbor;        // vertex -> adjacent vertices (CSR)
+  std::vector<double> neighbor_distance;            // length of each of those edges
   std::vector<int> component;                       // connected component of each vertex
   std::vector<int> component_size;
   double mean_edge_length = 0;
@@ -96,12 +97,15 @@ inline void compute_adjacency(Mesh_arrays& m) {
 
   double total = 0;
   std::size_t edges = 0;
+  m.neighbor_distance.resize(m.neighbor.size());
   for (std::size_t v = 0; v < n; ++v)
-    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
+      m.neighbor_distance[p] = norm(m.point[m.neighbor[p]] - m.point[v]);
       if (m.neighbor[p] > static_cast<int>(v)) {
-        total += norm(m.point[m.neighbor[p]] - m.point[v]);
+        total += m.neighbor_distance[p];
         ++edges;
       }
+    }
   m.mean_edge_length = edges > 0 ? total / static_cast<double>(edges) : 0.0;
 
   // Components by breadth-first search over the neighbour lists.

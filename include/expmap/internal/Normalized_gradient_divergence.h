@@ -22,15 +22,15 @@ namespace internal {
 /// to zero, so a right-hand side assembled from whole faces always
 /// satisfies the compatibility condition of the Neumann Poisson problem.
 /// A face where u is constant contributes nothing.
-inline std::array<double, 3> normalized_gradient_divergence(const std::array<double, 3>& length,
-                                                            const Triangle_shape& shape,
+inline std::array<double, 3> normalized_gradient_divergence(const Triangle_shape& shape,
                                                             std::array<double, 3> u) {
   // Heat decays exponentially: rescale per face so the gradient of a far,
   // tiny-valued face does not underflow (its direction is all we need).
   const double largest = std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
   if (!(largest > 0) || !std::isfinite(largest)) return {{0, 0, 0}};
   for (double& value : u) value /= largest;
-  const auto p = triangle_layout(length);
+  const double x1 = shape.layout[0], x2 = shape.layout[1], y2 = shape.layout[2];
+  const std::array<std::array<double, 2>, 3> p{{{{0.0, 0.0}}, {{x1, 0.0}}, {{x2, y2}}}};
   // grad u = 1/(2A) sum_k u_k rot90(p_{k+2} - p_{k+1}); the 1/(2A) factor
   // cancels in the normalization.
   double gx = 0, gy = 0;
@@ -40,7 +40,7 @@ inline std::array<double, 3> normalized_gradient_divergence(const std::array<dou
     gx += u[k] * -(b[1] - a[1]);
     gy += u[k] * (b[0] - a[0]);
   }
-  const double g = std::hypot(gx, gy);
+  const double g = std::sqrt(gx * gx + gy * gy);
   if (!(g > 0)) return {{0, 0, 0}};
   gx /= g;
   gy /= g;

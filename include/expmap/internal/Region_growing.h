@@ -20,27 +20,26 @@ namespace internal {
 class Vertex_marks {
  public:
   void resize(std::size_t n) {
-    m_stamp.assign(n, 0);
-    m_value.assign(n, 0);
+    m_entry.assign(n, Entry{});
     m_current = 0;
   }
   void next_query() {
     if (++m_current == 0) {
-      std::fill(m_stamp.begin(), m_stamp.end(), 0);
+      std::fill(m_entry.begin(), m_entry.end(), Entry{});
       m_current = 1;
     }
   }
-  bool is_marked(int v) const { return m_stamp[v] == m_current; }
-  void mark(int v, int value) {
-    m_stamp[v] = m_current;
-    m_value[v] = value;
-  }
+  bool is_marked(int v) const { return m_entry[v].stamp == m_current; }
+  void mark(int v, int value) { m_entry[v] = Entry{m_current, value}; }
   /// The value stored with a marked vertex.
-  int value(int v) const { return m_value[v]; }
+  int value(int v) const { return m_entry[v].value; }
 
  private:
-  std::vector<std::uint32_t> m_stamp;
-  std::vector<int> m_value;
+  struct Entry {  // stamp and value side by side: one cache line per lookup
+    std::uint32_t stamp = 0;
+    int value = 0;
+  };
+  std::vector<Entry> m_entry;
   std::uint32_t m_current = 0;
 };
 
@@ -71,7 +70,7 @@ void grow_region(const Mesh_arrays& m, int source, Vertex_marks& in_region,
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
       const int w = m.neighbor[p];
       if (in_region.is_marked(w)) continue;
-      const double dw = d + norm(m.point[w] - m.point[v]);
+      const double dw = d + m.neighbor_distance[p];
       if (!seen.is_marked(w) || dw < tentative[w]) {
         seen.mark(w, 0);
         tentative[w] = dw;

@@ -1,0 +1,86 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H
+#define EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H
+
+#include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Region_growing.h>
+#include <expmap/internal/Vector3.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/squared_distance_3.h>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// The part of a mesh that holds every geodesic of length at most `radius`
+/// from a source vertex, as a triangle soup with its own vertex numbering.
+struct Ball_submesh {
+  std::vector<Vector3> point;
+  std::vector<std::array<std::size_t, 3>> face;
+  std::vector<int> mesh_vertex;  ///< index in the whole mesh of each point
+  std::size_t source = 0;        ///< the source's index in `point`
+};
+
+/// Collects the faces within Euclidean distance `radius` of the source
+/// that are connected to its star (through shared vertices).
+///
+/// Why this holds every geodesic of length <= radius: every point of such a
+/// geodesic is within geodesic, hence Euclidean, distance `radius` of the
+/// source, so the faces it crosses are all selected and connected to the
+/// source; and a path inside the selection is a path in the mesh. So
+/// distances computed on the submesh equal the mesh's wherever they are at
+/// most `radius`, and are larger elsewhere. Every vertex within the ball
+/// keeps its whole star. Touches only the selected faces and their
+/// neighbours; `face_marks` and `vertex_marks` are sized for the mesh's
+/// faces and vertices and reused across queries.
+inline void extract_ball_submesh(const Mesh_arrays& m, int source, double radius,
+                                 Vertex_marks& face_marks, Vertex_marks& vertex_marks,
+                                 std::vector<int>& face_queue, Ball_submesh& out) {
+  using K = CGAL::Simple_cartesian<double>;
+  auto point = [&](int v) { return K::Point_3(m.point[v][0], m.point[v][1], m.point[v][2]); };
+  const K::Point_3 s = point(source);
+  const double squared_radius = radius * radius;
+
+  out.point.clear();
+  out.face.clear();
+  out.mesh_vertex.clear();
+  face_marks.next_query();
+  vertex_marks.next_query();
+  face_queue.clear();
+  auto local = [&](int v) {
+    if (!vertex_marks.is_marked(v)) {
+      vertex_marks.mark(v, static_cast<int>(out.point.size()));
+      out.point.push_back(m.point[v]);
+      out.mesh_vertex.push_back(v);
+    }
+    return static_cast<std::size_t>(vertex_marks.value(v));
+  };
+  out.source = local(source);
+  for (int p = m.vertex_face_start[source]; p < m.vertex_face_start[source + 1]; ++p) {
+    face_marks.mark(m.vertex_face[p], 0);
+    face_queue.push_back(m.vertex_face[p]);
+  }
+  for (std::size_t head = 0; head < face_queue.size(); ++head) {
+    const auto& f = m.face[face_queue[head]];
+    out.face.push_back({{local(f[0]), local(f[1]), local(f[2])}});
+    for (int v : f)
+      for (int p = m.vertex_face_start[v]; p < m.vertex_face_start[v + 1]; ++p) {
+        const int g = m.vertex_face[p];
+        if (face_marks.is_marked(g)) continue;
+        face_marks.mark(g, 0);
+        const auto& c = m.face[g];
+        const K::Triangle_3 triangle(point(c[0]), point(c[1]), point(c[2]));
+        if (CGAL::squared_distance(s, triangle) <= squared_radius) face_queue.push_back(g);
+      }
+  }
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H

@@ -1,0 +1,60 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_QUERY_VALIDATION_H
+#define EXPMAP_INTERNAL_QUERY_VALIDATION_H
+
+#include <expmap/Errors.h>
+#include <expmap/Patch.h>
+#include <expmap/internal/Mesh_arrays.h>
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// The checks every method makes on a query before touching the mesh, with
+/// the same messages for all of them.
+/// \throws Invalid_input if `source` is out of range or isolated.
+inline int checked_source(const Mesh_arrays& m, std::size_t source) {
+  const std::size_t n = m.number_of_vertices();
+  if (source >= n)
+    throw Invalid_input("source vertex " + std::to_string(source) +
+                        " is out of range (the mesh has " + std::to_string(n) + " vertices)");
+  const int s = static_cast<int>(source);
+  if (m.is_isolated(s))
+    throw Invalid_input("source vertex " + std::to_string(s) + " is isolated (no incident face)");
+  return s;
+}
+
+/// The distinct vertices of a vertex-set patch, the source excluded.
+/// \throws Invalid_input if one is out of range or not connected to `s`.
+inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& patch, int s) {
+  const std::size_t n = m.number_of_vertices();
+  std::vector<int> wanted;
+  for (std::size_t v : patch.vertices()) {
+    if (v >= n)
+      throw Invalid_input("patch vertex " + std::to_string(v) + " is out of range (the mesh has " +
+                          std::to_string(n) + " vertices)");
+    if (m.component[v] != m.component[s])
+      throw Invalid_input("patch vertex " + std::to_string(v) +
+                          " is not connected to source vertex " + std::to_string(s));
+    if (static_cast<int>(v) != s) wanted.push_back(static_cast<int>(v));
+  }
+  std::sort(wanted.begin(), wanted.end());
+  wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+  return wanted;
+}
+
+/// The number of vertices (source included) a count or fraction patch asks
+/// for, capped by the size of the source's component (0 for other kinds).
+inline std::size_t patch_target_count(const Mesh_arrays& m, const Patch& patch, int s) {
+  const std::size_t component = static_cast<std::size_t>(m.component_size[m.component[s]]);
+  return std::min(component, patch.target_count(m.number_of_vertices()));
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_QUERY_VALIDATION_H
