@@ -178,6 +178,10 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexPointMap vpm, VertexI
                           "CGAL::Polygon_mesh_processing::triangulate_faces()");
     if (corners[0] == corners[1] || corners[1] == corners[2] || corners[0] == corners[2])
       throw Invalid_input("face " + std::to_string(f_index) + " repeats a vertex");
+    // Start every face at its smallest vertex (orientation kept): data
+    // structures that list a face from different corners then give the same
+    // arrays, and so bit-identical results.
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
     m.face.push_back(corners);
     ++f_index;
   }

@@ -36,7 +36,7 @@ struct Vertex_tangent_frames {
 inline std::array<double, 2> stretched_coordinates(const Vector3& w, const Vector3& a1,
                                                    const Vector3& a2) {
   const double x = dot(w, a1), y = dot(w, a2);
-  const double projected = std::hypot(x, y);
+  const double projected = std::sqrt(x * x + y * y);
   if (!(projected > 0)) return {{0.0, 0.0}};
   const double stretch = norm(w) / projected;
   return {{stretch * x, stretch * y}};

@@ -16,7 +16,18 @@ namespace internal {
 struct Triangle_update {
   double distance;
   /// Weight of k in the angle: 0 takes the angle of i, 1 that of k.
-  double alpha;
+  /// Computed on demand: most candidates are rejected, and the angle
+  /// costs two arc tangents.
+  double alpha() const {
+    if (m_fixed_alpha >= 0) return m_fixed_alpha;
+    // Angles at the source from the ray towards i: to j, and to k.
+    const double to_j = std::atan2(std::abs(m_ix * m_dy - m_iy * m_dx), m_ix * m_dx + m_iy * m_dy);
+    const double to_k = std::atan2(std::abs(m_ix * m_ky - m_iy * m_kx), m_ix * m_kx + m_iy * m_ky);
+    return to_k > 0 ? std::min(1.0, to_j / to_k) : m_crossing;
+  }
+
+  double m_fixed_alpha = -1;  // 0 or 1 for the Dijkstra fallback
+  double m_ix = 0, m_iy = 0, m_kx = 0, m_ky = 0, m_dx = 0, m_dy = 0, m_crossing = 0;
 };
 
 /// The update of Melvaer & Reimers (DGPC, 2012). The triangle is unfolded
@@ -34,13 +45,17 @@ struct Triangle_update {
 /// polar coordinates to rounding error.
 inline Triangle_update virtual_source_update(const Vector3& pi, const Vector3& pk,
                                              const Vector3& pj, double u_i, double u_k) {
-  const double through_i = u_i + norm(pj - pi), through_k = u_k + norm(pj - pk);
-  const Triangle_update dijkstra =
-      through_i <= through_k ? Triangle_update{through_i, 0.0} : Triangle_update{through_k, 1.0};
+  auto dijkstra = [&] {
+    const double through_i = u_i + norm(pj - pi), through_k = u_k + norm(pj - pk);
+    Triangle_update t;
+    t.distance = std::min(through_i, through_k);
+    t.m_fixed_alpha = through_i <= through_k ? 0.0 : 1.0;
+    return t;
+  };
 
   const Vector3 edge = pk - pi;
   const double e = norm(edge);
-  if (!(e > 0)) return dijkstra;
+  if (!(e > 0)) return dijkstra();
   const Vector3 ex = (1.0 / e) * edge;
   const Vector3 w = pj - pi;
   const double xj = dot(w, ex);
@@ -53,24 +68,26 @@ inline Triangle_update virtual_source_update(const Vector3& pi, const Vector3& p
   if (a < c) std::swap(a, c);
   if (b < c) std::swap(b, c);
   const double heron = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
-  if (!(heron >= 0)) return dijkstra;
+  if (!(heron >= 0)) return dijkstra();
   const double xs = (u_i * u_i - u_k * u_k + e * e) / (2 * e);
   const double ys = -std::sqrt(heron) / (2 * e);
 
   // Where the line from the source to j crosses the x axis.
   const double dy = yj - ys;
-  if (!(dy > 0)) return dijkstra;
+  if (!(dy > 0)) return dijkstra();
   const double xc = xs + (xj - xs) * (-ys / dy);
-  if (!(xc >= 0 && xc <= e)) return dijkstra;
+  if (!(xc >= 0 && xc <= e)) return dijkstra();
 
-  const double dx = xj - xs;
-  const double distance = std::hypot(dx, dy);
-  // Angles at the source from the ray towards i: to j, and to k.
-  const double ix = -xs, iy = -ys, kx = e - xs, ky = -ys;
-  const double to_j = std::atan2(std::abs(ix * dy - iy * dx), ix * dx + iy * dy);
-  const double to_k = std::atan2(std::abs(ix * ky - iy * kx), ix * kx + iy * ky);
-  const double alpha = to_k > 0 ? std::min(1.0, to_j / to_k) : xc / e;
-  return {distance, alpha};
+  Triangle_update t;
+  t.m_dx = xj - xs;
+  t.m_dy = dy;
+  t.distance = std::sqrt(t.m_dx * t.m_dx + dy * dy);
+  t.m_ix = -xs;
+  t.m_iy = -ys;
+  t.m_kx = e - xs;
+  t.m_ky = -ys;
+  t.m_crossing = xc / e;
+  return t;
 }
 
 }  // namespace internal

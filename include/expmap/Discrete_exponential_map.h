@@ -1,0 +1,251 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_DISCRETE_EXPONENTIAL_MAP_H
+#define EXPMAP_DISCRETE_EXPONENTIAL_MAP_H
+
+/// \file Discrete_exponential_map.h
+/// The discrete exponential map (DEM) of Schmidt, Grimm & Wyvill (2006) in
+/// the robust form of Schmidt (2010): a baseline of the package.
+
+#include <expmap/Errors.h>
+#include <expmap/Local_map.h>
+#include <expmap/Patch.h>
+#include <expmap/internal/Fibonacci_dijkstra.h>
+#include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Query_validation.h>
+#include <expmap/internal/Region_growing.h>
+#include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/Vertex_tangent_frames.h>
+#include <expmap/internal/Workspace_pool.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace expmap {
+
+/// \ingroup PkgExpmapRef
+/// Discrete exponential map: Dijkstra's algorithm on Euclidean edge lengths
+/// decides the order in which vertices are frozen, and each vertex, when
+/// frozen, gets its coordinates u (in the source's tangent frame) from the
+/// upwind average over its already-frozen neighbours p,
+///
+///     u_q = sum_p w_p (u_p + R_p t_pq) / sum_p w_p,   w_p = 1 / |p - q|,
+///
+/// where t_pq is the edge q - p in p's tangent frame (projected onto the
+/// tangent plane, keeping its length) and R_p the turn from p's frame to
+/// the source's: the frame of p carried onto the source's tangent plane by
+/// the minimal rotation between their normals. The source's frame is the
+/// frame of `internal::tangent_frame()` shared by all methods, so its
+/// neighbours get their edge vectors in that frame and angles compare
+/// vertex by vertex with the other methods. On a plane every term of the
+/// average is exact, so DEM is exact there.
+///
+/// Guard: a surface path is never shorter than the geodesic, so |u_q| is
+/// clamped to the Dijkstra distance d_q; and an average of upwind vectors
+/// that nearly cancel (near a cut locus) is stretched back to d_q /
+/// `dilation_bound`. Dijkstra distances exceed true ones by the dilation of
+/// the triangulation (below 2 for Delaunay triangulations; 1.08 on the
+/// regular grid, 1.28 with half its edges flipped), so on planar meshes the
+/// lower bound never bites; on curved ones it only catches averages that
+/// have already failed (seen on 20% patches of the armadillo, where
+/// geodesics from both sides of a limb meet).
+///
+/// Patches: a radius patch holds every vertex with |u| <= R; thanks to the
+/// guard no vertex with d > dilation_bound * R can qualify, so the search
+/// stops there (it explores about dilation_bound^2 times the patch). A count
+/// or fraction patch holds the k vertices frozen first (nearest in graph
+/// distance: DEM has no better estimate before freezing), reported nearest
+/// first by |u|. A vertex set is reached by freezing until every vertex of
+/// the set is frozen. Boundaries need no special care: Dijkstra and the
+/// average only use existing edges. Work and memory touched per query are
+/// proportional to the search, never to the mesh.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+///         (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`).
+/// \tparam VertexPointMap a `ReadablePropertyMap` from vertex descriptors to
+///         points with `x()`, `y()`, `z()` convertible by `CGAL::to_double`.
+///         Default: the internal `vertex_point` map.
+///
+/// \code
+/// expmap::Discrete_exponential_map<Mesh> dem(mesh);
+/// auto map = dem.compute(source, expmap::Patch::fraction(0.05));
+/// \endcode
+/// \sa `Heat_exponential_map`, `Geodesic_polar_coordinates`, `Exact_exponential_map`
+template <class TriangleMesh, class VertexPointMap = CGAL::Default>
+class Discrete_exponential_map {
+ public:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Vertex_point_map = typename CGAL::Default::Get<
+      VertexPointMap,
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Result = Local_map<vertex_descriptor>;
+
+  /// Bound assumed on (Dijkstra distance) / (geodesic distance); see the guard.
+  static constexpr double dilation_bound = 2.0;
+
+  /// Copies the mesh and computes a tangent frame per vertex.
+  /// \throws Invalid_input for meshes that cannot be used (empty, not
+  ///         triangulated, degenerate faces, non-finite coordinates).
+  explicit Discrete_exponential_map(const TriangleMesh& tm)
+      : Discrete_exponential_map(tm, get(CGAL::vertex_point, tm)) {}
+
+  /// As above, with an explicit vertex point map.
+  Discrete_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
+      : m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
+    m_descriptors.resize(num_vertices(tm));
+    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
+    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
+    m_frames = internal::vertex_tangent_frames(m_mesh);
+  }
+
+  /// Polar coordinates around `source` for the vertices of `patch`.
+  /// \pre `source` is a vertex of the mesh given to the constructor.
+  /// \throws Invalid_input if the source is isolated, the reference
+  ///         direction is parallel to its normal, or the patch names
+  ///         vertices out of range or outside the source's component.
+  Result compute(vertex_descriptor source, const Patch& patch,
+                 const Query_options& query = {}) const {
+    return compute_by_index(static_cast<std::size_t>(get(m_vertex_index, source)), patch, query);
+  }
+
+  /// As `compute()`, with the source given by its index in `vertices(tm)`.
+  /// \throws Invalid_input as `compute()`, and if the index is out of range.
+  Result compute_by_index(std::size_t source, const Patch& patch,
+                          const Query_options& query = {}) const;
+
+  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+
+ private:
+  struct Workspace {
+    explicit Workspace(std::size_t n) : dijkstra(n), u(n), turn(n) { wanted.resize(n); }
+    internal::Dijkstra_workspace dijkstra;
+    std::vector<std::array<double, 2>> u;     // coordinates of frozen vertices
+    std::vector<std::array<double, 2>> turn;  // their frame turn (cos, sin)
+    internal::Vertex_marks wanted;
+    std::vector<internal::Polar_entry> entries;
+  };
+
+  using Vertex_index_map =
+      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
+
+  // Coordinates of the frozen vertex q from its frozen neighbours.
+  std::array<double, 2> upwind_average(int q, double d, int source,
+                                       const internal::Tangent_frame& frame,
+                                       const Workspace& ws) const;
+
+  Vertex_index_map m_vertex_index;
+  std::vector<vertex_descriptor> m_descriptors;
+  internal::Mesh_arrays m_mesh;
+  internal::Vertex_tangent_frames m_frames;
+  mutable internal::Workspace_pool<Workspace> m_workspaces;
+};
+
+template <class TM, class VPM>
+std::array<double, 2> Discrete_exponential_map<TM, VPM>::upwind_average(
+    int q, double d, int source, const internal::Tangent_frame& frame, const Workspace& ws) const {
+  using internal::operator-;
+  const internal::Vertex_marks& frozen = ws.dijkstra.settled;
+  double x = 0, y = 0, weights = 0;
+  std::array<double, 2> through_parent{{0, 0}};  // the single-path DEM value
+  double parent_distance = std::numeric_limits<double>::infinity();
+  for (int p = m_mesh.neighbor_start[q]; p < m_mesh.neighbor_start[q + 1]; ++p) {
+    const int v = m_mesh.neighbor[p];
+    if (!frozen.is_marked(v)) continue;
+    const internal::Vector3 edge = m_mesh.point[q] - m_mesh.point[v];
+    const double length = internal::norm(edge);
+    // The source's neighbours get their edge in the source's frame, as is.
+    if (v == source) return internal::stretched_coordinates(edge, frame.e1, frame.e2);
+    const auto t = m_frames.local_edge(v, edge);
+    const auto& c = ws.turn[v];
+    const std::array<double, 2> candidate{
+        {ws.u[v][0] + c[0] * t[0] - c[1] * t[1], ws.u[v][1] + c[1] * t[0] + c[0] * t[1]}};
+    const double w = 1.0 / length;
+    x += w * candidate[0];
+    y += w * candidate[1];
+    weights += w;
+    if (ws.dijkstra.distance[v] + length < parent_distance) {
+      parent_distance = ws.dijkstra.distance[v] + length;
+      through_parent = candidate;
+    }
+  }
+  std::array<double, 2> u{{x / weights, y / weights}};
+  double length = std::sqrt(u[0] * u[0] + u[1] * u[1]);
+  const double lower = d / dilation_bound;
+  if (length < lower && !(length > 1e-12 * d)) {
+    // The average cancelled out: no direction left to stretch.
+    u = through_parent;
+    length = std::sqrt(u[0] * u[0] + u[1] * u[1]);
+  }
+  if (length > 0) {
+    const double target = std::min(d, std::max(lower, length));
+    if (target != length) {
+      u[0] *= target / length;
+      u[1] *= target / length;
+    }
+  }
+  return u;
+}
+
+template <class TM, class VPM>
+typename Discrete_exponential_map<TM, VPM>::Result
+Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
+                                                     const Query_options& query) const {
+  const int s = internal::checked_source(m_mesh, source_index);
+  std::optional<internal::Vector3> reference;
+  if (query.reference_direction) reference = *query.reference_direction;
+  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
+  const Patch::Kind kind = patch.kind();
+  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  std::vector<int> wanted;
+  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_mesh, patch, s);
+
+  auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(number_of_vertices()); });
+  ws->wanted.next_query();
+  for (int v : wanted) ws->wanted.mark(v, 0);
+  std::size_t missing = wanted.size();
+  const double search_radius =
+      kind == Patch::Kind::geodesic_radius ? dilation_bound * patch.radius()
+                                           : std::numeric_limits<double>::infinity();
+
+  internal::fibonacci_dijkstra(m_mesh, s, ws->dijkstra, [&](int v, double d) {
+    if (d > search_radius) return false;
+    if ((kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction) &&
+        ws->dijkstra.order.size() >= target)
+      return false;
+    if (kind == Patch::Kind::vertex_set && missing == 0) return false;
+    if (v == s) {
+      ws->u[v] = {{0.0, 0.0}};
+      ws->turn[v] = {{1.0, 0.0}};
+    } else {
+      ws->turn[v] = internal::frame_rotation(m_frames.normal[v], m_frames.e1[v], frame);
+      ws->u[v] = upwind_average(v, d, s, frame, *ws);
+    }
+    if (kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v)) --missing;
+    return true;
+  });
+
+  ws->entries.clear();
+  for (int v : ws->dijkstra.order) {
+    if (v == s) continue;
+    if (kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
+    const double r = std::hypot(ws->u[v][0], ws->u[v][1]);
+    if (kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
+    ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
+  }
+  return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+}
+
+}  // namespace expmap
+
+#endif  // EXPMAP_DISCRETE_EXPONENTIAL_MAP_H

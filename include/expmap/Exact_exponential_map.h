@@ -1,0 +1,299 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_EXACT_EXPONENTIAL_MAP_H
+#define EXPMAP_EXACT_EXPONENTIAL_MAP_H
+
+/// \file Exact_exponential_map.h
+/// The exponential map of exact polyhedral geodesics, through
+/// `CGAL::Surface_mesh_shortest_path`: the reference of the package.
+
+#include <expmap/Errors.h>
+#include <expmap/Local_map.h>
+#include <expmap/Patch.h>
+#include <expmap/internal/Geodesic_ball_submesh.h>
+#include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Query_validation.h>
+#include <expmap/internal/Region_growing.h>
+#include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/Workspace_pool.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_shortest_path.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace expmap {
+
+/// \ingroup PkgExpmapRef
+/// The exponential map of exact polyhedral geodesics (Mitchell, Mount &
+/// Papadimitriou, as implemented by `CGAL::Surface_mesh_shortest_path`):
+/// r is the length of the shortest path on the surface from the source
+/// vertex, theta the angle of the path's first segment at the source,
+/// projected onto the tangent plane of `internal::tangent_frame()` (the
+/// frame all methods share), so results compare vertex by vertex.
+///
+/// Cost: a query builds the sequence tree of one source once and reads the
+/// distances (and, for the patch vertices, the paths) from it. The tree is
+/// built on the smallest part of the mesh that provably holds every
+/// shortest path the patch needs (`internal::extract_ball_submesh()`): the
+/// faces within Euclidean distance R of the source, where R is the radius,
+/// or for count and set patches the Dijkstra graph distance that reaches
+/// them (an upper bound of their geodesic distances). So a query costs
+/// about what the exact algorithm costs on that region, which grows faster
+/// than linearly with it; meant as a reference, not for interactive use.
+///
+/// Patches: a radius patch holds every vertex within geodesic distance R;
+/// a count or fraction patch the k nearest by geodesic distance; a vertex
+/// set its vertices. Boundaries are supported (the source may lie on one).
+/// The computation runs on an internal `CGAL::Surface_mesh` with the
+/// kernel `Exact_predicates_inexact_constructions_kernel` and double
+/// coordinates, so any face graph works and all representations of a mesh
+/// give the same result.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
+///         (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`).
+/// \tparam VertexPointMap a `ReadablePropertyMap` from vertex descriptors to
+///         points with `x()`, `y()`, `z()` convertible by `CGAL::to_double`.
+///         Default: the internal `vertex_point` map.
+///
+/// \code
+/// expmap::Exact_exponential_map<Mesh> exact(mesh);
+/// auto map = exact.compute(source, expmap::Patch::geodesic_radius(0.1));
+/// \endcode
+/// \sa `Heat_exponential_map`, `Discrete_exponential_map`, `Geodesic_polar_coordinates`
+template <class TriangleMesh, class VertexPointMap = CGAL::Default>
+class Exact_exponential_map {
+ public:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Vertex_point_map = typename CGAL::Default::Get<
+      VertexPointMap,
+      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Result = Local_map<vertex_descriptor>;
+
+  /// Copies the mesh.
+  /// \throws Invalid_input for meshes that cannot be used (empty, not
+  ///         triangulated, degenerate faces, non-finite coordinates).
+  explicit Exact_exponential_map(const TriangleMesh& tm)
+      : Exact_exponential_map(tm, get(CGAL::vertex_point, tm)) {}
+
+  /// As above, with an explicit vertex point map.
+  Exact_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
+      : m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
+    m_descriptors.resize(num_vertices(tm));
+    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
+    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
+  }
+
+  /// Polar coordinates around `source` for the vertices of `patch`.
+  /// \pre `source` is a vertex of the mesh given to the constructor.
+  /// \throws Invalid_input if the source is isolated, the reference
+  ///         direction is parallel to its normal, or the patch names
+  ///         vertices out of range or outside the source's component.
+  Result compute(vertex_descriptor source, const Patch& patch,
+                 const Query_options& query = {}) const {
+    return compute_by_index(static_cast<std::size_t>(get(m_vertex_index, source)), patch, query);
+  }
+
+  /// As `compute()`, with the source given by its index in `vertices(tm)`.
+  /// \throws Invalid_input as `compute()`, and if the index is out of range.
+  Result compute_by_index(std::size_t source, const Patch& patch,
+                          const Query_options& query = {}) const;
+
+  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+
+ private:
+  using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Submesh = CGAL::Surface_mesh<Kernel::Point_3>;
+  using Shortest_paths =
+      CGAL::Surface_mesh_shortest_path<CGAL::Surface_mesh_shortest_path_traits<Kernel, Submesh>>;
+
+  struct Workspace {
+    Workspace(std::size_t vertices, std::size_t faces) : tentative(vertices) {
+      face_marks.resize(faces);
+      vertex_marks.resize(vertices);
+      in_region.resize(vertices);
+      seen.resize(vertices);
+      wanted.resize(vertices);
+    }
+    internal::Vertex_marks face_marks, vertex_marks, in_region, seen, wanted;
+    std::vector<double> tentative;
+    std::vector<int> region, face_queue;
+    internal::Ball_submesh ball;
+    std::vector<internal::Polar_entry> entries;
+    std::vector<Kernel::Point_3> path;
+  };
+
+  // Direction of the first segment at the source `ps` of a path listed from
+  // its far end to the source, of length `r`.
+  static internal::Vector3 first_direction(const std::vector<Kernel::Point_3>& path,
+                                           const internal::Vector3& ps, double r);
+
+  // Radius of the Euclidean ball that holds the geodesics the patch needs.
+  double ball_radius(int s, const Patch& patch, std::size_t target, const std::vector<int>& wanted,
+                     Workspace& ws) const;
+
+  using Vertex_index_map =
+      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
+
+  Vertex_index_map m_vertex_index;
+  std::vector<vertex_descriptor> m_descriptors;
+  internal::Mesh_arrays m_mesh;
+  mutable internal::Workspace_pool<Workspace> m_workspaces;
+};
+
+template <class TM, class VPM>
+internal::Vector3 Exact_exponential_map<TM, VPM>::first_direction(
+    const std::vector<Kernel::Point_3>& path, const internal::Vector3& ps, double r) {
+  using internal::operator-;
+  const double tolerance = 1e-9 * r;
+  auto at = [&](std::size_t i) {
+    const auto& p = path[i];
+    return internal::Vector3{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  };
+  double length = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) length += internal::norm(at(i + 1) - at(i));
+  if (std::abs(length - r) <= tolerance) {
+    for (std::size_t i = path.size(); i-- > 0;) {
+      const internal::Vector3 d = at(i) - ps;
+      if (internal::norm(d) > tolerance) return d;
+    }
+    return {{0, 0, 0}};
+  }
+  // With a floating-point kernel, CGAL can report a corrupted path (points
+  // off the geodesic, out of order) when a geodesic runs exactly along mesh
+  // edges, as on regular grids; distances stay right. Then the farthest
+  // point from the source up to which the path is still consistent with its
+  // length is aimed at: the rest of the path must be at least as long as the
+  // straight line to the source. On planar meshes this direction is exact.
+  internal::Vector3 aim = at(0) - ps;
+  double travelled = 0;
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    travelled += internal::norm(at(i) - at(i - 1));
+    const internal::Vector3 d = at(i) - ps;
+    if (r - travelled < internal::norm(d) - tolerance) break;
+    if (internal::norm(d) > tolerance) aim = d;
+  }
+  return aim;
+}
+
+template <class TM, class VPM>
+double Exact_exponential_map<TM, VPM>::ball_radius(int s, const Patch& patch, std::size_t target,
+                                                   const std::vector<int>& wanted,
+                                                   Workspace& ws) const {
+  if (patch.kind() == Patch::Kind::geodesic_radius) return patch.radius();
+  // Graph distances bound geodesic ones from above: the k vertices nearest
+  // in the graph (or the wanted ones) all lie within the graph distance
+  // that reaches them, and so do the k geodesically nearest.
+  double reach = 0;
+  std::size_t missing = wanted.size();
+  internal::grow_region(m_mesh, s, ws.in_region, ws.seen, ws.tentative, ws.region,
+                        [&](int v, double d, std::size_t size) {
+                          if (patch.kind() == Patch::Kind::vertex_set) {
+                            if (missing == 0) return false;
+                            if (ws.wanted.is_marked(v)) --missing;
+                          } else if (size >= target) {
+                            return false;
+                          }
+                          reach = d;
+                          return true;
+                        });
+  return reach;
+}
+
+template <class TM, class VPM>
+typename Exact_exponential_map<TM, VPM>::Result
+Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
+                                                  const Query_options& query) const {
+  const int s = internal::checked_source(m_mesh, source_index);
+  std::optional<internal::Vector3> reference;
+  if (query.reference_direction) reference = *query.reference_direction;
+  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
+  const Patch::Kind kind = patch.kind();
+  const bool by_count = kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction;
+  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  std::vector<int> wanted;
+  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_mesh, patch, s);
+
+  auto ws = m_workspaces.acquire([this] {
+    return std::make_unique<Workspace>(number_of_vertices(), m_mesh.face.size());
+  });
+  ws->entries.clear();
+  ws->wanted.next_query();
+  for (int v : wanted) ws->wanted.mark(v, 0);
+  if ((by_count && target <= 1) || (kind == Patch::Kind::vertex_set && wanted.empty()))
+    return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+
+  // A hair more than the radius, so that rounding cannot drop a face that
+  // a geodesic of length exactly R touches.
+  const double radius = ball_radius(s, patch, target, wanted, *ws) * (1 + 1e-9);
+  internal::Ball_submesh& ball = ws->ball;
+  internal::extract_ball_submesh(m_mesh, s, radius, ws->face_marks, ws->vertex_marks,
+                                 ws->face_queue, ball);
+
+  // The selection may pinch at vertices outside the ball (two fans of
+  // faces meeting at a vertex); the soup is split there, which no geodesic
+  // of the patch passes through. Duplicated vertices are appended.
+  std::vector<Kernel::Point_3> points;
+  points.reserve(ball.point.size());
+  for (const auto& p : ball.point) points.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::array<std::size_t, 3>> faces = ball.face;
+  if (!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(faces))
+    CGAL::Polygon_mesh_processing::orient_polygon_soup(points, faces);
+  Submesh submesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, faces, submesh);
+
+  Shortest_paths shortest_paths(submesh);
+  shortest_paths.add_source_point(Submesh::Vertex_index(static_cast<Submesh::size_type>(ball.source)));
+  shortest_paths.build_sequence_tree();
+
+  const std::size_t n_local = ball.mesh_vertex.size();
+  for (std::size_t i = 0; i < n_local; ++i) {
+    const int v = ball.mesh_vertex[i];
+    if (v == s || (kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v))) continue;
+    const double r = CGAL::to_double(
+        shortest_paths
+            .shortest_distance_to_source_points(Submesh::Vertex_index(static_cast<Submesh::size_type>(i)))
+            .first);
+    if (r < 0) continue;  // not reached (cannot happen for the vertices a patch needs)
+    if (kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
+    ws->entries.push_back({static_cast<int>(i), r, 0.0});  // local index for now
+  }
+  auto nearer = [](const internal::Polar_entry& a, const internal::Polar_entry& b) {
+    return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
+  };
+  if (by_count && ws->entries.size() + 1 > target) {
+    std::nth_element(ws->entries.begin(), ws->entries.begin() + (target - 1), ws->entries.end(),
+                     nearer);
+    ws->entries.resize(target - 1);
+  }
+
+  const internal::Vector3& ps = m_mesh.point[s];
+  for (internal::Polar_entry& e : ws->entries) {
+    ws->path.clear();
+    shortest_paths.shortest_path_points_to_source_points(
+        Submesh::Vertex_index(static_cast<Submesh::size_type>(e.vertex)),
+        std::back_inserter(ws->path));
+    e.angle = frame.angle_of(first_direction(ws->path, ps, e.distance));
+    e.vertex = ball.mesh_vertex[e.vertex];
+  }
+  return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+}
+
+}  // namespace expmap
+
+#endif  // EXPMAP_EXACT_EXPONENTIAL_MAP_H
