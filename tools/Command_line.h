@@ -1,0 +1,217 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_TOOLS_COMMAND_LINE_H
+#define EXPMAP_TOOLS_COMMAND_LINE_H
+
+/// \file Command_line.h
+/// Parsing of `expmap compute` arguments, by hand: the grammar is small, and
+/// a dependency (Boost.Program_options needs a compiled library) would cost
+/// more than it saves. Only syntax and value ranges are checked here; what
+/// needs the mesh (the source index) is checked after reading it.
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace expmap_cli {
+
+/// A command line that asks for something impossible; reported with the
+/// usage exit status (2).
+class Usage_error : public std::runtime_error {
+ public:
+  explicit Usage_error(const std::string& message) : std::runtime_error(message) {}
+};
+
+enum class Output_format { csv, obj, svg };
+
+struct Output {
+  std::string path;
+  Output_format format;
+};
+
+/// What `expmap compute` was asked to do. Optional fields are unset when
+/// the option was not given, so the library's defaults stay in one place.
+struct Compute_arguments {
+  std::string mesh;
+  std::size_t source = 0;
+  std::optional<double> radius, fraction;
+  std::optional<std::size_t> vertex_count;
+  std::string method = "heat";
+  std::optional<double> time_factor;
+  std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
+  std::optional<std::array<double, 3>> reference;
+  bool triangulate = false;
+  std::vector<Output> outputs;
+  bool help = false;
+};
+
+/// The format an output path asks for, by its extension (any letter case).
+/// \throws Usage_error for any other extension.
+inline Output_format output_format(const std::string& path) {
+  const std::string::size_type dot = path.rfind('.');
+  const std::string::size_type slash = path.find_last_of("/\\");
+  std::string ext;
+  if (dot != std::string::npos && (slash == std::string::npos || dot > slash))
+    ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (ext == "csv") return Output_format::csv;
+  if (ext == "obj") return Output_format::obj;
+  if (ext == "svg") return Output_format::svg;
+  throw Usage_error("cannot tell the format of output '" + path +
+                    "': its extension must be .csv, .obj or .svg");
+}
+
+/// A finite real number filling the whole of `text`.
+inline double parse_real(const std::string& option, const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double value = std::strtod(begin, &end);
+  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value))
+    throw Usage_error(option + " expects a finite number (got '" + text + "')");
+  return value;
+}
+
+/// A non-negative integer filling the whole of `text` (no sign: strtoull
+/// would silently wrap "-1" to a huge index).
+inline std::size_t parse_index(const std::string& option, const std::string& text) {
+  const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
+    return std::isdigit(c) != 0;
+  });
+  errno = 0;
+  const unsigned long long value = digits ? std::strtoull(text.c_str(), nullptr, 10) : 0;
+  if (!digits || errno == ERANGE)
+    throw Usage_error(option + " expects a non-negative integer (got '" + text + "')");
+  return static_cast<std::size_t>(value);
+}
+
+/// Three numbers separated by commas, e.g. "1,0,0".
+inline std::array<double, 3> parse_vector(const std::string& option, const std::string& text) {
+  std::array<double, 3> v{};
+  std::string::size_type start = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::string::size_type comma = text.find(',', start);
+    if ((k < 2) != (comma != std::string::npos))
+      throw Usage_error(option + " expects three comma-separated numbers X,Y,Z (got '" + text +
+                        "')");
+    v[k] = parse_real(option, text.substr(start, k < 2 ? comma - start : std::string::npos));
+    start = comma + 1;
+  }
+  return v;
+}
+
+/// Parses the arguments that follow `compute` (`args` excludes the program
+/// and command names). `--help` stops checking: the caller prints help.
+/// \throws Usage_error naming the offending option or value.
+inline Compute_arguments parse_compute_arguments(const std::vector<std::string>& args) {
+  Compute_arguments a;
+  std::vector<std::string> positional;
+  bool method_given = false, source_given = false, options_ended = false;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    std::string name = args[i], value;
+    bool inline_value = false;
+    if (options_ended || name.size() < 2 || name[0] != '-') {
+      positional.push_back(name);
+      continue;
+    }
+    if (name == "--") {
+      options_ended = true;
+      continue;
+    }
+    const std::string::size_type equals = name.find('=');
+    if (name.compare(0, 2, "--") == 0 && equals != std::string::npos) {
+      value = name.substr(equals + 1);
+      name = name.substr(0, equals);
+      inline_value = true;
+    }
+    // The value of an option is the next argument, whatever it looks like:
+    // "--radius -1" must reach the range check, not read as an option.
+    auto take_value = [&]() -> std::string {
+      if (inline_value) return value;
+      if (i + 1 >= args.size()) throw Usage_error(name + " needs a value");
+      return args[++i];
+    };
+    auto once = [&](bool given) {
+      if (given) throw Usage_error(name + " is given more than once");
+    };
+
+    if (name == "-h" || name == "--help") {
+      a.help = true;
+      return a;
+    } else if (name == "--source") {
+      once(source_given);
+      a.source = parse_index(name, take_value());
+      source_given = true;
+    } else if (name == "--radius") {
+      once(a.radius.has_value());
+      const std::string text = take_value();
+      a.radius = parse_real(name, text);
+      if (!(*a.radius > 0)) throw Usage_error("--radius must be positive (got " + text + ")");
+    } else if (name == "--fraction") {
+      once(a.fraction.has_value());
+      const std::string text = take_value();
+      a.fraction = parse_real(name, text);
+      if (!(*a.fraction > 0 && *a.fraction <= 1))
+        throw Usage_error("--fraction must be in (0, 1] (got " + text + ")");
+    } else if (name == "--vertices") {
+      once(a.vertex_count.has_value());
+      a.vertex_count = parse_index(name, take_value());
+      if (*a.vertex_count == 0) throw Usage_error("--vertices must be at least 1");
+    } else if (name == "--method") {
+      once(method_given);
+      a.method = take_value();
+      method_given = true;
+    } else if (name == "--time-factor") {
+      once(a.time_factor.has_value());
+      const std::string text = take_value();
+      a.time_factor = parse_real(name, text);
+      if (!(*a.time_factor > 0))
+        throw Usage_error("--time-factor must be positive (got " + text + ")");
+    } else if (name == "--laplacian") {
+      once(a.laplacian.has_value());
+      a.laplacian = take_value();
+      if (*a.laplacian != "direct" && *a.laplacian != "intrinsic-delaunay")
+        throw Usage_error("--laplacian must be 'direct' or 'intrinsic-delaunay' (got '" +
+                          *a.laplacian + "')");
+    } else if (name == "--reference") {
+      once(a.reference.has_value());
+      a.reference = parse_vector(name, take_value());
+      const auto& r = *a.reference;
+      if (r[0] == 0 && r[1] == 0 && r[2] == 0) throw Usage_error("--reference must not be zero");
+    } else if (name == "--triangulate") {
+      if (inline_value) throw Usage_error("--triangulate takes no value");
+      a.triangulate = true;
+    } else if (name == "-o" || name == "--output") {
+      const std::string path = take_value();
+      a.outputs.push_back({path, output_format(path)});
+    } else {
+      throw Usage_error("unknown option '" + name + "' (see expmap compute --help)");
+    }
+  }
+
+  if (positional.empty()) throw Usage_error("no mesh file given (see expmap compute --help)");
+  if (positional.size() > 1)
+    throw Usage_error("more than one mesh file given ('" + positional[0] + "', '" + positional[1] +
+                      "')");
+  a.mesh = positional[0];
+  if (!source_given) throw Usage_error("--source V is required (a 0-based vertex index)");
+  const int regions =
+      int(a.radius.has_value()) + int(a.fraction.has_value()) + int(a.vertex_count.has_value());
+  if (regions != 1)
+    throw Usage_error("give exactly one of --radius, --fraction and --vertices (got " +
+                      std::to_string(regions) + ")");
+  if (a.outputs.empty()) throw Usage_error("no output given (-o FILE.csv, .obj or .svg)");
+  return a;
+}
+
+}  // namespace expmap_cli
+
+#endif  // EXPMAP_TOOLS_COMMAND_LINE_H
