@@ -15,9 +15,11 @@
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Cotan_operators.h>
 #include <expmap/internal/Intrinsic_delaunay.h>
+#include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
+#include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
@@ -172,13 +174,15 @@ class Heat_exponential_map {
  private:
   struct Workspace {
     explicit Workspace(const Heat_exponential_map& owner)
-        : solve(owner.m_heat_local.size()), tentative(owner.number_of_vertices()) {
+        : heat_solve(owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes()),
+          poisson_solve(owner.m_poisson_local.size(), owner.m_poisson_local.number_of_supernodes()),
+          tentative(owner.number_of_vertices()) {
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
       face_seen.resize(owner.m_tri.number_of_faces());
     }
-    internal::Localized_cholesky_solver::Workspace solve;
+    internal::Localized_cholesky_solver::Workspace heat_solve, poisson_solve;
     internal::Vertex_marks in_region, seen, wanted, face_seen;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
@@ -262,7 +266,7 @@ class Heat_exponential_map {
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
-  std::vector<std::size_t> select_patch(int s, const Patch& patch, std::size_t target,
+  std::vector<std::size_t> select_patch(const Patch& patch, std::size_t target,
                                         const std::vector<int>& wanted,
                                         const Workspace& ws) const;
   void write_result(int s, const internal::Tangent_frame& frame,
@@ -299,7 +303,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
     ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
   ws.heat.resize(n_candidates * width);
   stats += m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.candidates.data(), n_candidates,
-                              ws.heat.data(), ws.solve);
+                              ws.heat.data(), ws.heat_solve);
 
   // The region the distance is integrated on: the candidates with the most
   // heat from the source. Heat level sets are near-geodesic circles, so the
@@ -361,7 +365,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
     if (ws.divergence[i] != 0.0 && !m_is_pinned[ws.region[i]])
       ws.rhs.push_back({ws.region[i], 0, ws.divergence[i]});
   ws.potential.resize(kept);
-  stats += m_poisson_local.solve(ws.rhs, 1, ws.region.data(), kept, ws.potential.data(), ws.solve);
+  stats += m_poisson_local.solve(ws.rhs, 1, ws.region.data(), kept, ws.potential.data(), ws.poisson_solve);
   const double at_source = ws.potential[0];
   for (double& phi : ws.potential) phi = std::max(0.0, phi - at_source);
   return stats;
@@ -382,18 +386,15 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
     const double limit = patch.radius() * radius_scale;
     grow([&](int, double d, std::size_t) { return d <= limit; });
   } else if (patch.kind() == Patch::Kind::vertex_set) {
-    // Reach every wanted vertex, then keep going to the same margin.
+    // Reach every wanted vertex (distinct, source excluded), then keep going
+    // to the same margin.
     ws.wanted.next_query();
-    std::size_t distinct = 0, reached = 0;
-    for (int v : wanted)
-      if (!ws.wanted.is_marked(v)) {
-        ws.wanted.mark(v, 0);
-        ++distinct;
-      }
-    double limit = -1;
+    for (int v : wanted) ws.wanted.mark(v, 0);
+    std::size_t reached = 0;
+    double limit = wanted.empty() ? 0.0 : -1.0;
     grow([&](int v, double d, std::size_t) {
       if (limit >= 0) return d <= limit;
-      if (ws.wanted.is_marked(v) && ++reached == distinct) limit = d * radius_scale;
+      if (ws.wanted.is_marked(v) && ++reached == wanted.size()) limit = d * radius_scale;
       return true;
     });
   } else {
@@ -407,33 +408,17 @@ template <class TM, class VPM, class S>
 typename Heat_exponential_map<TM, VPM, S>::Result
 Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                    const Query_options& query) const {
-  const std::size_t n = number_of_vertices();
-  if (source_index >= n)
-    throw Invalid_input("source vertex " + std::to_string(source_index) +
-                        " is out of range (the mesh has " + std::to_string(n) + " vertices)");
-  const int s = static_cast<int>(source_index);
-  if (m_mesh.is_isolated(s))
-    throw Invalid_input("source vertex " + std::to_string(s) + " is isolated (no incident face)");
+  const int s = internal::checked_source(m_mesh, source_index);
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
   const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
   const internal::Star_gradient star = internal::star_gradient(m_mesh, s, frame);
-
   const std::size_t component =
       static_cast<std::size_t>(m_mesh.component_size[m_mesh.component[s]]);
-  const std::size_t target = std::min(component, patch.target_count(n));
-  std::vector<int> wanted;
-  if (patch.kind() == Patch::Kind::vertex_set) {
-    for (std::size_t v : patch.vertices()) {
-      if (v >= n)
-        throw Invalid_input("patch vertex " + std::to_string(v) +
-                            " is out of range (the mesh has " + std::to_string(n) + " vertices)");
-      if (m_mesh.component[v] != m_mesh.component[s])
-        throw Invalid_input("patch vertex " + std::to_string(v) +
-                            " is not connected to source vertex " + std::to_string(s));
-      wanted.push_back(static_cast<int>(v));
-    }
-  }
+  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  const std::vector<int> wanted = patch.kind() == Patch::Kind::vertex_set
+                                      ? internal::checked_vertex_set(m_mesh, patch, s)
+                                      : std::vector<int>{};
 
   auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(*this); });
   Result result;
@@ -445,14 +430,14 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     grow_candidates(s, patch, target, wanted, growth, *ws);
     const bool whole_component = ws->candidates.size() == component;
     result.statistics += solve_on_region(star, whole_component, *ws);
-    const std::vector<std::size_t> order = select_patch(s, patch, target, wanted, *ws);
+    const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);
     const double reach = patch.kind() == Patch::Kind::geodesic_radius
                              ? patch.radius()
                              : (order.empty() ? 0.0 : ws->potential[order.back()]);
-    const bool complete = patch.kind() != Patch::Kind::vertex_count &&
-                                  patch.kind() != Patch::Kind::fraction
-                              ? true
-                              : order.size() == target;
+    const bool complete =
+        patch.kind() == Patch::Kind::vertex_set ? order.size() == wanted.size() + 1
+        : patch.kind() == Patch::Kind::geodesic_radius ? true
+                                                        : order.size() == target;
     if (whole_component || (complete && reach * margin <= boundary_distance(*ws))) {
       write_result(s, frame, star, order, *ws, result);
       return result;
@@ -476,16 +461,13 @@ double Heat_exponential_map<TM, VPM, S>::boundary_distance(const Workspace& ws) 
 
 template <class TM, class VPM, class S>
 std::vector<std::size_t> Heat_exponential_map<TM, VPM, S>::select_patch(
-    int s, const Patch& patch, std::size_t target, const std::vector<int>& wanted,
+    const Patch& patch, std::size_t target, const std::vector<int>& wanted,
     const Workspace& ws) const {
   std::vector<std::size_t> order;  // region positions, nearest first
   if (patch.kind() == Patch::Kind::vertex_set) {
     order.push_back(0);  // the source
-    for (int v : wanted)
-      if (v != s && ws.in_region.is_marked(v))
-        order.push_back(static_cast<std::size_t>(ws.in_region.value(v)));
-    std::sort(order.begin(), order.end());
-    order.erase(std::unique(order.begin(), order.end()), order.end());
+    for (int v : wanted)  // distinct, without the source
+      if (ws.in_region.is_marked(v)) order.push_back(static_cast<std::size_t>(ws.in_region.value(v)));
   } else {
     order.resize(ws.region.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
@@ -513,11 +495,8 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                                                     const std::vector<std::size_t>& order,
                                                     const Workspace& ws, Result& result) const {
   const std::size_t width = star.vertices.size();
-  result.source = m_descriptors[s];
-  result.normal = frame.normal;
-  result.axis_u = frame.e1;
-  result.axis_v = frame.e2;
-  result.vertices.reserve(order.size());
+  std::vector<internal::Polar_entry> entries;
+  entries.reserve(order.size());
   std::vector<double> values(width);
   for (std::size_t i : order) {
     const int v = ws.region[i];
@@ -526,22 +505,18 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
       throw Computation_error("heat diffusion underflows at vertex " + std::to_string(v) +
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
-    double theta = 0;
-    if (v != s) {
-      // Step 3 of the paper: the direction of the geodesic to v is the
-      // gradient at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
-      const bool use_log = m_options.angle_estimator == Angle_estimator::log_heat_gradient &&
-                           std::all_of(h, h + width, [](double x) { return x > 0; });
-      for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
-      const auto g = star.apply(values.data());
-      theta = std::atan2(g[1], g[0]);
-      if (theta <= -M_PI) theta += 2 * M_PI;
-    }
-    result.vertices.push_back(m_descriptors[v]);
-    result.indices.push_back(static_cast<std::size_t>(v));
-    result.distance.push_back(ws.potential[i]);
-    result.angle.push_back(theta);
+    if (v == s) continue;
+    // Step 3 of the paper: the direction of the geodesic to v is the
+    // gradient at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
+    const bool use_log = m_options.angle_estimator == Angle_estimator::log_heat_gradient &&
+                         std::all_of(h, h + width, [](double x) { return x > 0; });
+    for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
+    const auto g = star.apply(values.data());
+    entries.push_back({v, ws.potential[i], std::atan2(g[1], g[0])});
   }
+  Solve_statistics statistics = result.statistics;
+  result = internal::assemble_local_map(s, entries, m_descriptors, frame);
+  result.statistics = statistics;
 }
 
 /// \ingroup PkgExpmapRef

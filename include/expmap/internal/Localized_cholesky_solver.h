@@ -5,6 +5,7 @@
 
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Solve_statistics.h>
+#include <expmap/internal/Supernodal_factor.h>
 
 #include <algorithm>
 #include <array>
@@ -52,18 +53,26 @@ class Localized_cholesky_solver {
   /// visit stamps (so no O(n) clearing is ever needed per query).
   class Workspace {
    public:
-    explicit Workspace(int n = 0) { resize(n); }
+    Workspace() = default;
+    /// Scratch for a factor of order `n` with `supernodes` supernodes.
+    Workspace(int n, std::size_t supernodes) { resize(n, supernodes); }
 
    private:
     friend class Localized_cholesky_solver;
-    void resize(int n) {
+    bool fits(int n, std::size_t supernodes) const {
+      return m_size == n && m_forward_stamp.size() == supernodes;
+    }
+    void resize(int n, std::size_t supernodes) {
+      m_size = n;
       // Rows of the block start on cache lines (a row of 8 doubles is one line).
       constexpr std::size_t line = 64 / sizeof(double);
       m_storage.assign(static_cast<std::size_t>(n) * max_block_width + line, 0.0);
       const auto address = reinterpret_cast<std::uintptr_t>(m_storage.data());
       m_block = m_storage.data() + (line - (address / sizeof(double)) % line) % line;
-      m_forward_stamp.assign(static_cast<std::size_t>(n), 0);
-      m_backward_stamp.assign(static_cast<std::size_t>(n), 0);
+      m_forward_stamp.assign(supernodes, 0);
+      m_backward_stamp.assign(supernodes, 0);
+      m_forward_entry.assign(supernodes, 0);
+      m_backward_entry.assign(supernodes, 0);
       m_stamp = 0;
     }
     std::uint32_t next_stamp() {
@@ -77,39 +86,23 @@ class Localized_cholesky_solver {
     std::vector<double> m_storage;
     double* m_block = nullptr;  // m_storage, aligned
     std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
+    std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
     std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
     std::uint32_t m_stamp = 0;
+    int m_size = -1;
   };
 
   Localized_cholesky_solver() = default;
 
-  /// Prepares the traversal data (elimination tree, scaling) of a factor.
-  /// \pre the factor's owner outlives this object.
-  explicit Localized_cholesky_solver(const Cholesky_factor_view& factor) : m_factor(factor) {
-    const int n = factor.size;
-    m_inverse_permutation.assign(static_cast<std::size_t>(n), -1);
-    for (int k = 0; k < n; ++k) m_inverse_permutation[factor.permutation[k]] = k;
-    m_parent.assign(static_cast<std::size_t>(n), -1);
-    m_first_offdiagonal.resize(static_cast<std::size_t>(n));
-    m_forward_scale.resize(static_cast<std::size_t>(n));
-    m_result_scale.resize(static_cast<std::size_t>(n));
-    for (int j = 0; j < n; ++j) {
-      const int begin = factor.column_start[j] + (factor.unit_diagonal ? 0 : 1);
-      m_first_offdiagonal[j] = begin;
-      int parent = n;
-      for (int p = begin; p < factor.column_start[j + 1]; ++p)
-        parent = std::min(parent, factor.row_index[p]);
-      m_parent[j] = parent == n ? -1 : parent;
-      // LL^T: y_j = b_j / L_jj and x_j = (y_j - ...) / L_jj.
-      // LDL^T: y_j = b_j / D_jj after propagating, and x_j = y_j - ... .
-      if (factor.unit_diagonal) {
-        m_forward_scale[j] = 1.0;
-        m_result_scale[j] = 1.0 / factor.diagonal[j];
-      } else {
-        m_forward_scale[j] = 1.0 / factor.value[factor.column_start[j]];
-        m_result_scale[j] = 1.0;
-      }
-    }
+  /// Regroups the factor into supernodes for the traversals; the factor's
+  /// owner may be destroyed afterwards (the supernodal copy is self-contained).
+  explicit Localized_cholesky_solver(const Cholesky_factor_view& factor)
+      : m_factor(make_supernodal_factor(factor)) {
+    m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
+    for (const auto& sn : m_factor.supernode)
+      for (int c = 0; c < sn.ncol; ++c)
+        m_inverse_diagonal[sn.first_column + c] =
+            1.0 / m_factor.value[sn.diagonal + static_cast<std::size_t>(c) * sn.ncol + c];
     compute_tree_height();
   }
 
@@ -119,9 +112,14 @@ class Localized_cholesky_solver {
   /// leaf-to-root path).
   int tree_height() const { return m_tree_height; }
 
+  /// Number of supernodes (dense column blocks) of the factor.
+  std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
+
   /// A workspace sized for this factor.
   std::unique_ptr<Workspace> make_workspace() const {
-    return std::make_unique<Workspace>(m_factor.size);
+    auto ws = std::make_unique<Workspace>();
+    ws->resize(m_factor.size, number_of_supernodes());
+    return ws;
   }
 
   /// Solves A X = B where B has `width` columns given by its nonzero
@@ -132,8 +130,8 @@ class Localized_cholesky_solver {
                          const int* rows, std::size_t row_count, double* out,
                          Workspace& ws) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
-    if (ws.m_forward_stamp.size() != static_cast<std::size_t>(m_factor.size))
-      ws.resize(m_factor.size);
+    if (!ws.fits(m_factor.size, number_of_supernodes()))
+      ws.resize(m_factor.size, number_of_supernodes());
     Solve_statistics total;
     std::vector<Rhs_entry> chunk;
     std::vector<double> chunk_out;
@@ -171,28 +169,36 @@ class Localized_cholesky_solver {
     return solve_block<16>(entries, rows, row_count, out, ws, width);
   }
 
-  // Appends to `nodes` the nodes on the path from `start` towards the root
-  // that are not stamped yet, stamping them. Paths are kept in the order the
-  // caller needs by `place_paths_first`.
-  void collect_path(int start, std::vector<std::uint32_t>& stamp, std::uint32_t s,
-                    std::vector<int>& path) const {
-    for (int j = start; j != -1 && stamp[j] != s; j = m_parent[j]) {
-      stamp[j] = s;
-      path.push_back(j);
-    }
-  }
-
-  // Builds a topological order (descendants before ancestors) of the union of
-  // the tree paths from `starts` to the root: each new path goes in front of
-  // the paths found before it, whose nodes it can only precede.
-  template <class Start, class StartToNode>
-  void reach(const Start* begin, const Start* end, StartToNode to_node,
-             std::vector<std::uint32_t>& stamp, std::uint32_t s, std::vector<int>& order,
-             std::vector<int>& path) const {
+  // Builds a topological order (descendants before ancestors) of the
+  // supernodes on the tree paths from the pivots of `begin..end` to the
+  // root: each new path goes in front of the paths found before it, whose
+  // nodes it can only precede. Also records, per supernode, the first of its
+  // columns a path enters at: the columns before it are not needed (zero in
+  // forward substitution, unused in back substitution).
+  template <class Start, class StartToPivot>
+  void reach(const Start* begin, const Start* end, StartToPivot to_pivot,
+             std::vector<std::uint32_t>& stamp, std::vector<int>& entry, std::uint32_t s,
+             std::vector<int>& order, std::vector<int>& path) const {
+    const auto& F = m_factor;
     order.clear();
     for (const Start* start = begin; start != end; ++start) {
       path.clear();
-      collect_path(to_node(*start), stamp, s, path);
+      int column = to_pivot(*start);
+      int k = F.supernode_of_column[column];
+      while (true) {
+        const int offset = column - F.supernode[k].first_column;
+        if (stamp[k] == s) {  // known: only its entry may move down
+          entry[k] = std::min(entry[k], offset);
+          break;
+        }
+        stamp[k] = s;
+        entry[k] = offset;
+        path.push_back(k);
+        const auto& sn = F.supernode[k];
+        if (sn.parent == -1) break;
+        column = F.row_index[sn.below_rows];  // the parent of the last column
+        k = sn.parent;
+      }
       order.insert(order.end(), path.rbegin(), path.rend());
     }
     std::reverse(order.begin(), order.end());
@@ -202,88 +208,115 @@ class Localized_cholesky_solver {
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
                                int width = W) const {
-    const int* colp = m_factor.column_start;
-    const int* rowi = m_factor.row_index;
-    const double* val = m_factor.value;
-    double* y = ws.m_block;  // row-major n x W, zero on entry and exit
+    const auto& F = m_factor;
+    double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
+    auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
     Solve_statistics stats;
 
-    // Scatter b (permuted) into the block and find the forward node set.
+    // Scatter b (permuted) into the block and find the forward supernodes.
     const std::uint32_t s = ws.next_stamp();
-    for (const Rhs_entry& e : entries) {
-      const int k = m_inverse_permutation[e.row];
-      y[static_cast<std::size_t>(k) * W + e.column] += e.value;
-    }
-    reach(entries.data(), entries.data() + entries.size(), [this](const Rhs_entry& e) { return m_inverse_permutation[e.row]; },
-          ws.m_forward_stamp, s, ws.m_forward_nodes, ws.m_path);
+    for (const Rhs_entry& e : entries) row_of(F.inverse_permutation[e.row])[e.column] += e.value;
+    reach(entries.data(), entries.data() + entries.size(),
+          [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; }, ws.m_forward_stamp,
+          ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
 
     // Forward: L y = b over the ancestors of the nonzeros of b.
-    for (const int j : ws.m_forward_nodes) {
-      double* yj = y + static_cast<std::size_t>(j) * W;
-      std::array<double, W> t;
-      for (int c = 0; c < W; ++c) t[c] = yj[c] * m_forward_scale[j];
-      const int end = colp[j + 1];
-      for (int p = m_first_offdiagonal[j]; p < end; ++p) {
-        double* yi = y + static_cast<std::size_t>(rowi[p]) * W;
-        const double l = val[p];
-        for (int c = 0; c < W; ++c) yi[c] -= l * t[c];
+    for (const int k : ws.m_forward_nodes) {
+      const auto& sn = F.supernode[k];
+      const int first = ws.m_forward_entry[k];
+      double* ys = row_of(sn.first_column);  // the supernode's rows, contiguous
+      const double* diagonal = F.value.data() + sn.diagonal;
+      for (int c = first; c < sn.ncol; ++c) {
+        double* yc = ys + c * W;
+        const double inverse = m_inverse_diagonal[sn.first_column + c];
+        for (int w = 0; w < W; ++w) yc[w] *= inverse;
+        for (int r = c + 1; r < sn.ncol; ++r) {
+          const double l = diagonal[r * sn.ncol + c];
+          double* yr = ys + r * W;
+          for (int w = 0; w < W; ++w) yr[w] -= l * yc[w];
+        }
       }
-      const double r = m_result_scale[j];
-      for (int c = 0; c < W; ++c) yj[c] = t[c] * r;
-      stats.factor_entries += static_cast<std::size_t>(end - colp[j]);
+      const double* below = F.value.data() + sn.below;
+      const int* below_rows = F.row_index.data() + sn.below_rows;
+      for (int t = 0; t < sn.nbelow; ++t) {
+        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
+        std::array<double, W> acc{};
+        for (int c = first; c < sn.ncol; ++c)
+          for (int w = 0; w < W; ++w) acc[w] += l[c] * ys[c * W + w];
+        double* yt = row_of(below_rows[t]);
+        for (int w = 0; w < W; ++w) yt[w] -= acc[w];
+      }
+      stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
+      stats.factor_entries += entries_of(sn, first);
     }
-    stats.forward_nodes = ws.m_forward_nodes.size();
 
     // Backward: L^T x = y over the ancestors of the requested rows, in place.
-    reach(rows, rows + row_count, [this](int row) { return m_inverse_permutation[row]; },
-          ws.m_backward_stamp, s, ws.m_backward_nodes, ws.m_path);
+    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
+          ws.m_backward_stamp, ws.m_backward_entry, s, ws.m_backward_nodes, ws.m_path);
     for (auto it = ws.m_backward_nodes.rbegin(); it != ws.m_backward_nodes.rend(); ++it) {
-      const int j = *it;
-      double* yj = y + static_cast<std::size_t>(j) * W;
-      std::array<double, W> acc;
-      for (int c = 0; c < W; ++c) acc[c] = yj[c];
-      const int end = colp[j + 1];
-      for (int p = m_first_offdiagonal[j]; p < end; ++p) {
-        const double* xi = y + static_cast<std::size_t>(rowi[p]) * W;
-        const double l = val[p];
-        for (int c = 0; c < W; ++c) acc[c] -= l * xi[c];
+      const auto& sn = F.supernode[*it];
+      const int first = ws.m_backward_entry[*it];
+      double* ys = row_of(sn.first_column);
+      const double* below = F.value.data() + sn.below;
+      const int* below_rows = F.row_index.data() + sn.below_rows;
+      for (int t = 0; t < sn.nbelow; ++t) {
+        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
+        const double* xt = row_of(below_rows[t]);
+        for (int c = first; c < sn.ncol; ++c)
+          for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * xt[w];
       }
-      const double f = m_forward_scale[j];
-      for (int c = 0; c < W; ++c) yj[c] = acc[c] * f;
-      stats.factor_entries += static_cast<std::size_t>(end - colp[j]);
+      const double* diagonal = F.value.data() + sn.diagonal;
+      for (int c = sn.ncol - 1; c >= first; --c) {
+        double* yc = ys + c * W;
+        for (int r = c + 1; r < sn.ncol; ++r) {
+          const double l = diagonal[r * sn.ncol + c];
+          const double* yr = ys + r * W;
+          for (int w = 0; w < W; ++w) yc[w] -= l * yr[w];
+        }
+        const double inverse = m_inverse_diagonal[sn.first_column + c];
+        for (int w = 0; w < W; ++w) yc[w] *= inverse;
+      }
+      stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
+      stats.factor_entries += entries_of(sn, first);
     }
-    stats.backward_nodes = ws.m_backward_nodes.size();
 
     for (std::size_t i = 0; i < row_count; ++i) {
-      const double* x = y + static_cast<std::size_t>(m_inverse_permutation[rows[i]]) * W;
+      const double* x = row_of(F.inverse_permutation[rows[i]]);
       for (int c = 0; c < width; ++c) out[i * width + c] = x[c];
     }
 
-    // Leave the block zero for the next solve: only touched rows are cleared.
-    for (const int j : ws.m_forward_nodes)
-      std::fill_n(y + static_cast<std::size_t>(j) * W, W, 0.0);
-    for (const int j : ws.m_backward_nodes)
-      std::fill_n(y + static_cast<std::size_t>(j) * W, W, 0.0);
+    // Leave the block zero for the next solve: only touched rows are cleared
+    // (a supernode's own rows; rows below it belong to ancestors, also listed).
+    auto clear = [&](int k, int first) {
+      const auto& sn = F.supernode[k];
+      std::fill_n(row_of(sn.first_column + first), static_cast<std::size_t>(sn.ncol - first) * W,
+                  0.0);
+    };
+    for (const int k : ws.m_forward_nodes) clear(k, ws.m_forward_entry[k]);
+    for (const int k : ws.m_backward_nodes) clear(k, ws.m_backward_entry[k]);
     return stats;
   }
 
+  // Entries of the supernode's columns from `first` on.
+  static std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first) {
+    const std::size_t c = static_cast<std::size_t>(sn.ncol - first);
+    return c * (c + 1) / 2 + static_cast<std::size_t>(sn.nbelow) * c;
+  }
+
   void compute_tree_height() {
-    // Parents have larger indices than their children, so one descending
-    // sweep assigns every node its depth.
-    const int n = m_factor.size;
-    std::vector<int> depth(static_cast<std::size_t>(n), 1);
+    // Parents come after their children, so one descending sweep gives every
+    // supernode the number of columns on its path to the root.
+    const auto& sns = m_factor.supernode;
+    std::vector<int> depth(sns.size(), 0);
     m_tree_height = 0;
-    for (int j = n - 1; j >= 0; --j) {
-      if (m_parent[j] != -1) depth[j] = depth[m_parent[j]] + 1;
-      m_tree_height = std::max(m_tree_height, depth[j]);
+    for (std::size_t k = sns.size(); k-- > 0;) {
+      depth[k] = sns[k].ncol + (sns[k].parent == -1 ? 0 : depth[sns[k].parent]);
+      m_tree_height = std::max(m_tree_height, depth[k]);
     }
   }
 
-  Cholesky_factor_view m_factor;
-  std::vector<int> m_inverse_permutation;  // row of A -> pivot
-  std::vector<int> m_parent;               // elimination tree
-  std::vector<int> m_first_offdiagonal;
-  std::vector<double> m_forward_scale, m_result_scale;
+  Supernodal_factor m_factor;
+  std::vector<double> m_inverse_diagonal;  // 1 / L(j, j)
   int m_tree_height = 0;
 };
 

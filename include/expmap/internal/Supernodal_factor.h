@@ -1,0 +1,134 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
+#define EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
+
+#include <expmap/Cholesky_factor_view.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// A Cholesky factor L (A(P,P) = L L^T) regrouped into fundamental
+/// supernodes: runs of consecutive columns j, j+1, ... where each column's
+/// parent in the elimination tree is the next one and their row patterns
+/// below the run coincide. Each supernode is stored densely:
+///
+/// - the diagonal block (ncol x ncol, lower triangle, row-major), and
+/// - the rows below it (nbelow x ncol, row-major) with their row indices.
+///
+/// Triangular solves then work on small dense blocks instead of scattering
+/// one entry at a time: the rows below a supernode are updated with a short
+/// dot product per row, and the separators at the top of a nested
+/// dissection ordering — which every localized solve passes through — are
+/// single large supernodes.
+///
+/// Built from any `Cholesky_factor_view` (an LDL^T factor is scaled to
+/// LL^T), so every solver model gets the same kernel.
+struct Supernodal_factor {
+  struct Supernode {
+    int first_column = 0;     // columns first_column .. first_column + ncol - 1
+    int ncol = 0;
+    int nbelow = 0;           // rows below the diagonal block
+    std::size_t diagonal = 0; // offset of the diagonal block in `value`
+    std::size_t below = 0;    // offset of the below block in `value`
+    std::size_t below_rows = 0;  // offset of the below rows in `row_index`
+    int parent = -1;          // parent supernode, -1 for a root
+  };
+
+  int size = 0;
+  std::vector<Supernode> supernode;
+  std::vector<int> supernode_of_column;
+  std::vector<int> row_index;
+  std::vector<double> value;
+  std::vector<int> permutation;          // pivot -> row of A
+  std::vector<int> inverse_permutation;  // row of A -> pivot
+
+  std::size_t number_of_entries() const { return value.size(); }
+};
+
+/// Regroups the factor of `view` into fundamental supernodes.
+/// \throws std::runtime_error if an LDL^T factor has a non-positive pivot.
+inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view) {
+  const int n = view.size;
+  Supernodal_factor f;
+  f.size = n;
+  f.permutation.assign(view.permutation, view.permutation + n);
+  f.inverse_permutation.assign(static_cast<std::size_t>(n), -1);
+  for (int k = 0; k < n; ++k) f.inverse_permutation[f.permutation[k]] = k;
+
+  // Strictly lower entries of column j start at `first[j]`; its parent is
+  // its smallest such row.
+  std::vector<int> first(static_cast<std::size_t>(n)), count(static_cast<std::size_t>(n)),
+      parent(static_cast<std::size_t>(n), -1);
+  for (int j = 0; j < n; ++j) {
+    first[j] = view.column_start[j] + (view.unit_diagonal ? 0 : 1);
+    count[j] = view.column_start[j + 1] - first[j];
+    int p = n;
+    for (int q = first[j]; q < view.column_start[j + 1]; ++q) p = std::min(p, view.row_index[q]);
+    parent[j] = p == n ? -1 : p;
+  }
+  auto diagonal_of = [&](int j) {
+    if (!view.unit_diagonal) return view.value[view.column_start[j]];
+    if (!(view.diagonal[j] > 0))
+      throw std::runtime_error("LDL^T factor with a non-positive pivot: the matrix is not "
+                               "positive definite");
+    return std::sqrt(view.diagonal[j]);
+  };
+
+  f.supernode_of_column.assign(static_cast<std::size_t>(n), -1);
+  std::vector<std::pair<int, double>> column;
+  for (int j = 0; j < n;) {
+    int end = j + 1;
+    while (end < n && parent[end - 1] == end && count[end - 1] == count[end] + 1) ++end;
+    Supernodal_factor::Supernode s;
+    s.first_column = j;
+    s.ncol = end - j;
+    s.nbelow = count[end - 1];
+    s.diagonal = f.value.size();
+    s.below = s.diagonal + static_cast<std::size_t>(s.ncol) * s.ncol;
+    s.below_rows = f.row_index.size();
+    f.value.resize(s.below + static_cast<std::size_t>(s.nbelow) * s.ncol, 0.0);
+    // Rows below the run: the pattern of its last column.
+    {
+      const int last = end - 1;
+      for (int q = first[last]; q < view.column_start[last + 1]; ++q)
+        f.row_index.push_back(view.row_index[q]);
+      std::sort(f.row_index.begin() + static_cast<std::ptrdiff_t>(s.below_rows), f.row_index.end());
+    }
+    const int* below_rows = f.row_index.data() + s.below_rows;
+    for (int c = 0; c < s.ncol; ++c) {
+      const int col = j + c;
+      const double d = diagonal_of(col);
+      const double scale = view.unit_diagonal ? d : 1.0;  // LDL^T -> LL^T
+      f.value[s.diagonal + static_cast<std::size_t>(c) * s.ncol + c] = d;
+      for (int q = first[col]; q < view.column_start[col + 1]; ++q) {
+        const int row = view.row_index[q];
+        const double v = view.value[q] * scale;
+        if (row < end) {
+          f.value[s.diagonal + static_cast<std::size_t>(row - j) * s.ncol + c] = v;
+        } else {
+          const int t = static_cast<int>(std::lower_bound(below_rows, below_rows + s.nbelow, row) -
+                                         below_rows);
+          f.value[s.below + static_cast<std::size_t>(t) * s.ncol + c] = v;
+        }
+      }
+      f.supernode_of_column[col] = static_cast<int>(f.supernode.size());
+    }
+    f.supernode.push_back(s);
+    j = end;
+  }
+  for (auto& s : f.supernode)
+    s.parent = s.nbelow == 0 ? -1 : f.supernode_of_column[f.row_index[s.below_rows]];
+  return f;
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
