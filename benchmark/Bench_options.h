@@ -1,0 +1,163 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_BENCHMARK_BENCH_OPTIONS_H
+#define EXPMAP_BENCHMARK_BENCH_OPTIONS_H
+
+/// \file Bench_options.h
+/// The command line of expmap-bench.
+
+#include <cstddef>
+#include <cstdlib>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace expmap_bench {
+
+inline const char* usage_text() {
+  return R"(usage: expmap-bench --mesh FILE [--mesh FILE ...] [options]
+
+Times exponential-map queries from random source vertices (the paper's
+Figs. 7 and 8): query time against patch fraction and against mesh size.
+
+  --mesh FILE              a triangle mesh (OFF, OBJ, PLY, STL); repeatable
+  --subdivide-elephant N   also benchmark refined_elephant Loop-subdivided N
+                           times ("elephant_loopN", 711,420 vertices for N=2),
+                           cached as OFF in --cache-dir; runs after the --mesh
+                           meshes
+  --elephant FILE          the mesh to subdivide (default: the --mesh named
+                           refined_elephant.off, else
+                           data/meshes/refined_elephant.off)
+  --cache-dir DIR          where elephant_loopN.off is cached (default: the
+                           directory of the mesh to subdivide)
+  --methods LIST           comma-separated: heat, heat-full, dem, dgpc, exact
+                           (default: heat,heat-full)
+  --fractions LIST         patch fractions in (0,1] (default:
+                           0.01,0.02,0.05,0.1,0.25)
+  --sources N              random source vertices per mesh (default 20)
+  --full-sources N         heat-full uses only the first N of them (default:
+                           all); its time does not depend on the fraction
+  --seed S                 std::mt19937 seed of the sources (default 1)
+  --time-factor M          Heat_options::time_factor (default: the library's)
+  --csv OUT                one row per mesh, method and fraction
+  --stats CSV2             one row per mesh: precompute time, peak memory,
+                           factor sizes
+  --detail CSV3            one row per query
+  --help                   this text
+)";
+}
+
+/// A command-line mistake (the program prints the usage after it).
+struct Usage_error : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+struct Bench_options {
+  std::vector<std::string> meshes;
+  unsigned subdivide_elephant = 0;  // 0: none
+  std::string elephant;             // empty: find it
+  std::string cache_dir;            // empty: next to the elephant
+  std::vector<std::string> methods{"heat", "heat-full"};
+  std::vector<double> fractions{0.01, 0.02, 0.05, 0.1, 0.25};
+  std::size_t sources = 20;
+  std::size_t full_sources = 0;  // 0: all
+  unsigned seed = 1;
+  double time_factor = 0;  // 0: the library's default
+  std::string csv, stats, detail;
+  bool help = false;
+};
+
+inline std::vector<std::string> split_list(const std::string& text) {
+  std::vector<std::string> items;
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+inline double parse_double(const std::string& option, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double x = std::stod(text, &used);
+    if (used == text.size()) return x;
+  } catch (...) {
+  }
+  throw Usage_error(option + " expects a number (got '" + text + "')");
+}
+
+inline std::size_t parse_count(const std::string& option, const std::string& text) {
+  if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
+    throw Usage_error(option + " expects a non-negative integer (got '" + text + "')");
+  return static_cast<std::size_t>(std::stoull(text));
+}
+
+/// \throws Usage_error with a message for the user.
+inline Bench_options parse_bench_options(int argc, char** argv) {
+  Bench_options o;
+  const std::vector<std::string> known_methods{"heat", "heat-full", "dem", "dgpc", "exact"};
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      o.help = true;
+      return o;
+    }
+    if (i + 1 >= argc) throw Usage_error("unknown option or missing value: " + arg);
+    const std::string value = argv[++i];
+    if (arg == "--mesh") {
+      o.meshes.push_back(value);
+    } else if (arg == "--subdivide-elephant") {
+      o.subdivide_elephant = static_cast<unsigned>(parse_count(arg, value));
+      if (o.subdivide_elephant > 4)
+        throw Usage_error("--subdivide-elephant: at most 4 levels (each is 4x larger)");
+    } else if (arg == "--elephant") {
+      o.elephant = value;
+    } else if (arg == "--cache-dir") {
+      o.cache_dir = value;
+    } else if (arg == "--methods") {
+      o.methods = split_list(value);
+      for (const auto& m : o.methods) {
+        bool ok = false;
+        for (const auto& k : known_methods) ok = ok || m == k;
+        if (!ok)
+          throw Usage_error("unknown method '" + m +
+                                      "' (choose from heat, heat-full, dem, dgpc, exact)");
+      }
+      if (o.methods.empty()) throw Usage_error("--methods is empty");
+    } else if (arg == "--fractions") {
+      o.fractions.clear();
+      for (const auto& f : split_list(value)) {
+        const double x = parse_double(arg, f);
+        if (!(x > 0 && x <= 1)) throw Usage_error("fractions must be in (0, 1]");
+        o.fractions.push_back(x);
+      }
+      if (o.fractions.empty()) throw Usage_error("--fractions is empty");
+    } else if (arg == "--sources") {
+      o.sources = parse_count(arg, value);
+      if (o.sources == 0) throw Usage_error("--sources must be at least 1");
+    } else if (arg == "--full-sources") {
+      o.full_sources = parse_count(arg, value);
+    } else if (arg == "--seed") {
+      o.seed = static_cast<unsigned>(parse_count(arg, value));
+    } else if (arg == "--time-factor") {
+      o.time_factor = parse_double(arg, value);
+      if (!(o.time_factor > 0)) throw Usage_error("--time-factor must be positive");
+    } else if (arg == "--csv") {
+      o.csv = value;
+    } else if (arg == "--stats") {
+      o.stats = value;
+    } else if (arg == "--detail") {
+      o.detail = value;
+    } else {
+      throw Usage_error("unknown option: " + arg);
+    }
+  }
+  if (o.meshes.empty() && o.subdivide_elephant == 0)
+    throw Usage_error("give at least one --mesh (or --subdivide-elephant N)");
+  return o;
+}
+
+}  // namespace expmap_bench
+
+#endif  // EXPMAP_BENCHMARK_BENCH_OPTIONS_H
