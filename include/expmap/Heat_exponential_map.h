@@ -81,6 +81,12 @@ struct Heat_options {
   /// input mesh. Larger values give smoother maps; see the manual for the
   /// measurements behind the default.
   double time_factor = 10.0;
+  /// Time factor of the heat solve the distance is integrated from, when it
+  /// should differ from the one the angles are read from (a smaller value
+  /// keeps distances closer to geodesic while the angles stay smooth).
+  /// Costs one more factorization: about 50% more precomputation time and
+  /// memory. Default: `time_factor`.
+  std::optional<double> distance_time_factor;
   Laplacian_mode laplacian = Laplacian_mode::direct;
   Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
   /// A query solves on a region about this many times larger (in vertex
@@ -157,16 +163,20 @@ class Heat_exponential_map {
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
-  /// Diffusion time t = time_factor * h^2.
+  /// Diffusion time t = time_factor * h^2 of the heat the angles come from.
   double time_step() const { return m_time_step; }
+  /// Diffusion time of the heat the distance comes from.
+  double distance_time_step() const { return m_distance_time_step; }
   /// Mean edge length h of the input mesh.
   double mean_edge_length() const { return m_mesh.mean_edge_length; }
   /// Elimination-tree heights of the heat and Poisson factors.
   int heat_tree_height() const { return m_heat_local.tree_height(); }
   int poisson_tree_height() const { return m_poisson_local.tree_height(); }
-  /// Stored entries of the heat and Poisson factors.
+  /// Stored entries of all factors (heat, Poisson and, if separate, the
+  /// distance heat), in the dense supernodal form the queries traverse.
   std::size_t factor_nonzeros() const {
-    return m_heat_solver->factor_nonzeros() + m_poisson_solver->factor_nonzeros();
+    return m_heat_local.number_of_entries() + m_poisson_local.number_of_entries() +
+           (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
   std::size_t number_of_vertices() const { return m_descriptors.size(); }
   const Heat_options& options() const { return m_options; }
@@ -177,19 +187,25 @@ class Heat_exponential_map {
         : heat_solve(owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes()),
           poisson_solve(owner.m_poisson_local.size(), owner.m_poisson_local.number_of_supernodes()),
           tentative(owner.number_of_vertices()) {
+      if (owner.m_separate_distance_heat)
+        distance_heat_solve = internal::Localized_cholesky_solver::Workspace(
+            owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes());
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
       face_seen.resize(owner.m_tri.number_of_faces());
     }
-    internal::Localized_cholesky_solver::Workspace heat_solve, poisson_solve;
+    internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
     internal::Vertex_marks in_region, seen, wanted, face_seen;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
     std::vector<int> region;           // the hottest candidates: where distance is integrated
     std::vector<std::size_t> heat_row; // row of each region vertex in `heat`
+    std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
-    std::vector<double> heat, divergence, potential;
+    std::vector<double> heat;          // heat from the source on the candidates
+    std::vector<double> star_heat;     // heat from the star on the patch, row-major
+    std::vector<double> divergence, potential;
   };
 
   std::size_t index_of(vertex_descriptor v) const {
@@ -217,18 +233,24 @@ class Heat_exponential_map {
         m_options.regularization == Poisson_regularization::cgal_compatible ? 1e-8 : 0.0;
     internal::Sparse_matrix L = internal::cotan_laplacian(m_tri, m_shapes, corner_regularization);
     const Eigen::VectorXd mass = internal::lumped_mass(m_tri, m_shapes);
-    m_time_step = m_options.time_factor * m_mesh.mean_edge_length * m_mesh.mean_edge_length;
+    const double h2 = m_mesh.mean_edge_length * m_mesh.mean_edge_length;
+    m_time_step = m_options.time_factor * h2;
+    m_distance_time_step = m_options.distance_time_factor.value_or(m_options.time_factor) * h2;
+    m_separate_distance_heat = m_distance_time_step != m_time_step;
 
     std::vector<int> isolated;
     for (std::size_t v = 0; v < m_mesh.number_of_vertices(); ++v)
       if (m_mesh.is_isolated(static_cast<int>(v))) isolated.push_back(static_cast<int>(v));
 
-    internal::Sparse_matrix heat = m_time_step * L;
-    for (int v = 0; v < heat.rows(); ++v) heat.coeffRef(v, v) += mass[v];
-    internal::make_identity_row(heat, isolated);
-    m_heat_solver = std::make_unique<Solver>();
-    m_heat_solver->factor(heat);
-    m_heat_local = internal::Localized_cholesky_solver(m_heat_solver->factor_view());
+    auto heat_matrix = [&](double t) {
+      internal::Sparse_matrix heat = t * L;
+      for (int v = 0; v < heat.rows(); ++v) heat.coeffRef(v, v) += mass[v];
+      internal::make_identity_row(heat, isolated);
+      return heat;
+    };
+    m_heat_local = factor_locally(heat_matrix(m_time_step));
+    if (m_separate_distance_heat)
+      m_distance_heat_local = factor_locally(heat_matrix(m_distance_time_step));
 
     // Identity rows need a zero right-hand side: isolated vertices get no
     // divergence anyway, and a pinned vertex's potential must stay 0.
@@ -246,9 +268,20 @@ class Heat_exponential_map {
       }
     }
     internal::make_identity_row(L, identity_rows);
-    m_poisson_solver = std::make_unique<Solver>();
-    m_poisson_solver->factor(L);
-    m_poisson_local = internal::Localized_cholesky_solver(m_poisson_solver->factor_view());
+    m_poisson_local = factor_locally(L);
+  }
+
+  // Factors A with the solver model and keeps only the supernodal copy the
+  // localized solves traverse (the model's own factor is released at once,
+  // halving the memory held between queries).
+  static internal::Localized_cholesky_solver factor_locally(const internal::Sparse_matrix& A) {
+    Solver solver;
+    solver.factor(A);
+    return internal::Localized_cholesky_solver(solver.factor_view());
+  }
+
+  const internal::Localized_cholesky_solver& distance_heat() const {
+    return m_separate_distance_heat ? m_distance_heat_local : m_heat_local;
   }
 
   // Candidates solved for heat per patch vertex wanted, beyond `region_growth`.
@@ -258,11 +291,13 @@ class Heat_exponential_map {
   // `growth` times larger than asked.
   void grow_candidates(int s, const Patch& patch, std::size_t target,
                        const std::vector<int>& wanted, double growth, Workspace& ws) const;
-  // Solves heat (for the star columns) on the candidates, picks the region
-  // and integrates the distance on it: fills ws.heat (row-major, one row per
-  // candidate), ws.region, ws.heat_row and ws.potential (distances).
-  Solve_statistics solve_on_region(const internal::Star_gradient& star, bool whole_component,
-                                   Workspace& ws) const;
+  // Solves the heat from the source on the candidates, picks the region and
+  // integrates the distance on it: fills ws.heat (one value per candidate),
+  // ws.region, ws.heat_row and ws.potential (distances).
+  Solve_statistics solve_distance(int s, bool whole_component, Workspace& ws) const;
+  // Solves the heat from the source and its neighbours for the patch
+  // vertices `ws.patch`: fills ws.star_heat.
+  Solve_statistics solve_star_heat(const internal::Star_gradient& star, Workspace& ws) const;
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
@@ -284,26 +319,24 @@ class Heat_exponential_map {
   std::vector<internal::Triangle_shape> m_shapes;
   std::vector<int> m_tri_face_start, m_tri_face;
   std::vector<char> m_is_pinned;  // one vertex per component in the Poisson system
-  double m_time_step = 0;
-  std::unique_ptr<Solver> m_heat_solver, m_poisson_solver;
-  internal::Localized_cholesky_solver m_heat_local, m_poisson_local;
+  double m_time_step = 0, m_distance_time_step = 0;
+  bool m_separate_distance_heat = false;
+  internal::Localized_cholesky_solver m_heat_local, m_distance_heat_local, m_poisson_local;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
 template <class TM, class VPM, class S>
-Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
-    const internal::Star_gradient& star, bool whole_component, Workspace& ws) const {
-  const std::size_t width = star.vertices.size();
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool whole_component,
+                                                                 Workspace& ws) const {
   const std::size_t n_candidates = ws.candidates.size();
   Solve_statistics stats;
 
-  // Step 1: heat from the source and each neighbour, one block solve.
-  ws.rhs.clear();
-  for (std::size_t c = 0; c < width; ++c)
-    ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
-  ws.heat.resize(n_candidates * width);
-  stats += m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.candidates.data(), n_candidates,
-                              ws.heat.data(), ws.heat_solve);
+  // Step 1 (distance part): the heat from the source on the candidates.
+  ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
+  ws.heat.resize(n_candidates);
+  auto& heat_workspace = m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
+  stats += distance_heat().solve(ws.rhs, 1, ws.candidates.data(), n_candidates, ws.heat.data(),
+                                 heat_workspace);
 
   // The region the distance is integrated on: the candidates with the most
   // heat from the source. Heat level sets are near-geodesic circles, so the
@@ -318,8 +351,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
   ws.heat_row.resize(n_candidates);
   std::iota(ws.heat_row.begin(), ws.heat_row.end(), std::size_t{0});
   auto hotter = [&](std::size_t a, std::size_t b) {
-    const double ha = ws.heat[a * width], hb = ws.heat[b * width];
-    return ha > hb || (ha == hb && a < b);
+    return ws.heat[a] > ws.heat[b] || (ws.heat[a] == ws.heat[b] && a < b);
   };
   if (kept < n_candidates)
     std::nth_element(ws.heat_row.begin(), ws.heat_row.begin() + static_cast<std::ptrdiff_t>(kept),
@@ -353,7 +385,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
         continue;
       std::array<double, 3> u;
       for (int k = 0; k < 3; ++k)
-        u[k] = ws.heat[ws.heat_row[static_cast<std::size_t>(ws.in_region.value(c[k]))] * width];
+        u[k] = ws.heat[ws.heat_row[static_cast<std::size_t>(ws.in_region.value(c[k]))]];
       const auto div = internal::normalized_gradient_divergence(m_shapes[f], u);
       for (int k = 0; k < 3; ++k) ws.divergence[ws.in_region.value(c[k])] += div[k];
     }
@@ -369,6 +401,21 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_on_region(
   const double at_source = ws.potential[0];
   for (double& phi : ws.potential) phi = std::max(0.0, phi - at_source);
   return stats;
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
+    const internal::Star_gradient& star, Workspace& ws) const {
+  // Step 1 (angle part): one block solve for the source and each neighbour,
+  // read on the patch only — by symmetry, the heat from every patch vertex
+  // read on the star of the source.
+  const std::size_t width = star.vertices.size();
+  ws.rhs.clear();
+  for (std::size_t c = 0; c < width; ++c)
+    ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
+  ws.star_heat.resize(ws.patch.size() * width);
+  return m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.patch.data(), ws.patch.size(),
+                            ws.star_heat.data(), ws.heat_solve);
 }
 
 template <class TM, class VPM, class S>
@@ -398,9 +445,11 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
       return true;
     });
   } else {
+    // Only the count matters here: the region is cut from the candidates by
+    // heat, so a breadth-first search (no heap) is enough.
     const std::size_t budget = static_cast<std::size_t>(
         std::ceil(growth * candidate_excess * static_cast<double>(target))) + 16;
-    grow([&](int, double, std::size_t size) { return size < budget; });
+    internal::grow_region_by_hops(m_mesh, s, ws.in_region, budget, ws.candidates);
   }
 }
 
@@ -429,7 +478,7 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   for (double growth = m_options.region_growth;; growth *= 2) {
     grow_candidates(s, patch, target, wanted, growth, *ws);
     const bool whole_component = ws->candidates.size() == component;
-    result.statistics += solve_on_region(star, whole_component, *ws);
+    result.statistics += solve_distance(s, whole_component, *ws);
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);
     const double reach = patch.kind() == Patch::Kind::geodesic_radius
                              ? patch.radius()
@@ -439,6 +488,9 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
         : patch.kind() == Patch::Kind::geodesic_radius ? true
                                                         : order.size() == target;
     if (whole_component || (complete && reach * margin <= boundary_distance(*ws))) {
+      ws->patch.clear();
+      for (std::size_t i : order) ws->patch.push_back(ws->region[i]);
+      result.statistics += solve_star_heat(star, *ws);
       write_result(s, frame, star, order, *ws, result);
       return result;
     }
@@ -498,9 +550,10 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
   std::vector<internal::Polar_entry> entries;
   entries.reserve(order.size());
   std::vector<double> values(width);
-  for (std::size_t i : order) {
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const std::size_t i = order[p];
     const int v = ws.region[i];
-    const double* h = ws.heat.data() + ws.heat_row[i] * width;
+    const double* h = ws.star_heat.data() + p * width;
     if (!(std::abs(h[0]) > std::numeric_limits<double>::min()))
       throw Computation_error("heat diffusion underflows at vertex " + std::to_string(v) +
                               " (distance " + std::to_string(ws.potential[i]) +

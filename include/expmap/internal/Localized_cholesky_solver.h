@@ -112,6 +112,9 @@ class Localized_cholesky_solver {
   /// leaf-to-root path).
   int tree_height() const { return m_tree_height; }
 
+  /// Stored entries of the supernodal factor (dense blocks included).
+  std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
+
   /// Number of supernodes (dense column blocks) of the factor.
   std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
 

@@ -80,6 +80,27 @@ void grow_region(const Mesh_arrays& m, int source, Vertex_marks& in_region,
   }
 }
 
+/// Breadth-first search from `source` over the mesh edges, appending up to
+/// `budget` vertices to `region` (nearest first in edge hops) and marking
+/// each with its position. Cheaper than `grow_region` (no heap, no lengths)
+/// where only the size of the region matters.
+inline void grow_region_by_hops(const Mesh_arrays& m, int source, Vertex_marks& in_region,
+                                std::size_t budget, std::vector<int>& region) {
+  region.clear();
+  in_region.next_query();
+  in_region.mark(source, 0);
+  region.push_back(source);
+  for (std::size_t head = 0; head < region.size() && region.size() < budget; ++head) {
+    const int v = region[head];
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1] && region.size() < budget; ++p) {
+      const int w = m.neighbor[p];
+      if (in_region.is_marked(w)) continue;
+      in_region.mark(w, static_cast<int>(region.size()));
+      region.push_back(w);
+    }
+  }
+}
+
 }  // namespace internal
 }  // namespace expmap
 

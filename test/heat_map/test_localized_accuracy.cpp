@@ -1,0 +1,75 @@
+// The localized query integrates the distance on a region around the patch
+// only; against the whole-mesh heat distances (the same method with the
+// Poisson problem solved on the whole mesh) the cut-off error must stay
+// small: mean below 1% of the patch radius in the inner 90% of the patch.
+#include <expmap/Analytic_surfaces.h>
+#include <expmap/Heat_exponential_map.h>
+
+#include <boost/test/unit_test.hpp>
+
+#include <unordered_map>
+
+#include "test_support.h"
+
+using namespace expmap_test;
+
+namespace {
+
+struct Cutoff_error {
+  double mean_inner = 0, max_inner = 0, mean_all = 0, max_all = 0;  // relative to the radius
+};
+
+template <class Heat>
+Cutoff_error cutoff_error(const Heat& heat, std::size_t source, double fraction) {
+  const auto whole = heat.compute_by_index(source, expmap::Patch::fraction(1.0));
+  std::unordered_map<std::size_t, double> reference;
+  for (std::size_t i = 0; i < whole.size(); ++i) reference[whole.indices[i]] = whole.distance[i];
+  const auto local = heat.compute_by_index(source, expmap::Patch::fraction(fraction));
+  const double radius = local.distance.back();
+  const std::size_t inner = static_cast<std::size_t>(0.9 * static_cast<double>(local.size()));
+  Cutoff_error e;
+  for (std::size_t i = 0; i < local.size(); ++i) {
+    const double error = std::abs(local.distance[i] - reference.at(local.indices[i])) / radius;
+    e.mean_all += error;
+    e.max_all = std::max(e.max_all, error);
+    if (i < inner) {
+      e.mean_inner += error;
+      e.max_inner = std::max(e.max_inner, error);
+    }
+  }
+  e.mean_all /= static_cast<double>(local.size());
+  e.mean_inner /= static_cast<double>(inner);
+  return e;
+}
+
+template <class Heat>
+void check_cutoff(const Heat& heat, const char* name, std::initializer_list<std::size_t> sources) {
+  for (double fraction : {0.05, 0.25})
+    for (std::size_t source : sources) {
+      const Cutoff_error e = cutoff_error(heat, source, fraction);
+      BOOST_TEST_MESSAGE(name << " source " << source << ", " << fraction * 100
+                              << "% patch: inner 90% mean " << e.mean_inner << " max "
+                              << e.max_inner << "; whole patch mean " << e.mean_all << " max "
+                              << e.max_all << " (relative to the radius)");
+      BOOST_TEST(e.mean_inner < 0.01);
+    }
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(localized_accuracy)
+
+BOOST_AUTO_TEST_CASE(armadillo_cutoff_error) {
+  const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
+  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  check_cutoff(heat, "armadillo", {2000, 9000, 15000});
+}
+
+BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(expmap::make_icosphere(5, 1.0), mesh);
+  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  check_cutoff(heat, "sphere (10,242 vertices)", {0, 5000});
+}
+
+BOOST_AUTO_TEST_SUITE_END()
