@@ -12,6 +12,7 @@
 #include <expmap/Patch.h>
 #include <expmap/internal/Fibonacci_dijkstra.h>
 #include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -86,9 +87,8 @@ template <class TriangleMesh, class VertexPointMap = CGAL::Default>
 class Discrete_exponential_map {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map = typename CGAL::Default::Get<
-      VertexPointMap,
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Vertex_point_map =
+      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
   using Result = Local_map<vertex_descriptor>;
 
   /// Bound assumed on (Dijkstra distance) / (geodesic distance); see the guard.
@@ -102,11 +102,8 @@ class Discrete_exponential_map {
 
   /// As above, with an explicit vertex point map.
   Discrete_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
-    m_descriptors.resize(num_vertices(tm));
-    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
-    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
-    m_frames = internal::vertex_tangent_frames(m_mesh);
+      : m_indexed(tm, vpm) {
+    m_frames = internal::vertex_tangent_frames(m_indexed.arrays);
   }
 
   /// Polar coordinates around `source` for the vertices of `patch`.
@@ -116,7 +113,7 @@ class Discrete_exponential_map {
   ///         vertices out of range or outside the source's component.
   Result compute(vertex_descriptor source, const Patch& patch,
                  const Query_options& query = {}) const {
-    return compute_by_index(static_cast<std::size_t>(get(m_vertex_index, source)), patch, query);
+    return compute_by_index(m_indexed.index_of(source), patch, query);
   }
 
   /// As `compute()`, with the source given by its index in `vertices(tm)`.
@@ -124,7 +121,7 @@ class Discrete_exponential_map {
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
-  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   struct Workspace {
@@ -136,17 +133,12 @@ class Discrete_exponential_map {
     std::vector<internal::Polar_entry> entries;
   };
 
-  using Vertex_index_map =
-      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
-
   // Coordinates of the frozen vertex q from its frozen neighbours.
   std::array<double, 2> upwind_average(int q, double d, int source,
                                        const internal::Tangent_frame& frame,
                                        const Workspace& ws) const;
 
-  Vertex_index_map m_vertex_index;
-  std::vector<vertex_descriptor> m_descriptors;
-  internal::Mesh_arrays m_mesh;
+  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
   internal::Vertex_tangent_frames m_frames;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
@@ -159,10 +151,10 @@ std::array<double, 2> Discrete_exponential_map<TM, VPM>::upwind_average(
   double x = 0, y = 0, weights = 0;
   std::array<double, 2> through_parent{{0, 0}};  // the single-path DEM value
   double parent_distance = std::numeric_limits<double>::infinity();
-  for (int p = m_mesh.neighbor_start[q]; p < m_mesh.neighbor_start[q + 1]; ++p) {
-    const int v = m_mesh.neighbor[p];
+  for (int p = m_indexed.arrays.neighbor_start[q]; p < m_indexed.arrays.neighbor_start[q + 1]; ++p) {
+    const int v = m_indexed.arrays.neighbor[p];
     if (!frozen.is_marked(v)) continue;
-    const internal::Vector3 edge = m_mesh.point[q] - m_mesh.point[v];
+    const internal::Vector3 edge = m_indexed.arrays.point[q] - m_indexed.arrays.point[v];
     const double length = internal::norm(edge);
     // The source's neighbours get their edge in the source's frame, as is.
     if (v == source) return internal::stretched_coordinates(edge, frame.e1, frame.e2);
@@ -201,14 +193,14 @@ template <class TM, class VPM>
 typename Discrete_exponential_map<TM, VPM>::Result
 Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                      const Query_options& query) const {
-  const int s = internal::checked_source(m_mesh, source_index);
+  const int s = internal::checked_source(m_indexed.arrays, source_index);
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
+  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
   const Patch::Kind kind = patch.kind();
-  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
   std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_mesh, patch, s);
+  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
 
   auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(number_of_vertices()); });
   ws->wanted.next_query();
@@ -218,7 +210,7 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
       kind == Patch::Kind::geodesic_radius ? dilation_bound * patch.radius()
                                            : std::numeric_limits<double>::infinity();
 
-  internal::fibonacci_dijkstra(m_mesh, s, ws->dijkstra, [&](int v, double d) {
+  internal::fibonacci_dijkstra(m_indexed.arrays, s, ws->dijkstra, [&](int v, double d) {
     if (d > search_radius) return false;
     if ((kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction) &&
         ws->dijkstra.order.size() >= target)
@@ -243,7 +235,7 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
     if (kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
   }
-  return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
 }
 
 }  // namespace expmap

@@ -12,6 +12,7 @@
 #include <expmap/Patch.h>
 #include <expmap/internal/Geodesic_ball_submesh.h>
 #include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -80,9 +81,8 @@ template <class TriangleMesh, class VertexPointMap = CGAL::Default>
 class Exact_exponential_map {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map = typename CGAL::Default::Get<
-      VertexPointMap,
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Vertex_point_map =
+      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
   using Result = Local_map<vertex_descriptor>;
 
   /// Copies the mesh.
@@ -93,10 +93,7 @@ class Exact_exponential_map {
 
   /// As above, with an explicit vertex point map.
   Exact_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
-    m_descriptors.resize(num_vertices(tm));
-    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
-    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
+      : m_indexed(tm, vpm) {
   }
 
   /// Polar coordinates around `source` for the vertices of `patch`.
@@ -106,7 +103,7 @@ class Exact_exponential_map {
   ///         vertices out of range or outside the source's component.
   Result compute(vertex_descriptor source, const Patch& patch,
                  const Query_options& query = {}) const {
-    return compute_by_index(static_cast<std::size_t>(get(m_vertex_index, source)), patch, query);
+    return compute_by_index(m_indexed.index_of(source), patch, query);
   }
 
   /// As `compute()`, with the source given by its index in `vertices(tm)`.
@@ -114,7 +111,7 @@ class Exact_exponential_map {
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
-  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -147,12 +144,7 @@ class Exact_exponential_map {
   double ball_radius(int s, const Patch& patch, std::size_t target, const std::vector<int>& wanted,
                      Workspace& ws) const;
 
-  using Vertex_index_map =
-      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
-
-  Vertex_index_map m_vertex_index;
-  std::vector<vertex_descriptor> m_descriptors;
-  internal::Mesh_arrays m_mesh;
+  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -201,7 +193,7 @@ double Exact_exponential_map<TM, VPM>::ball_radius(int s, const Patch& patch, st
   // that reaches them, and so do the k geodesically nearest.
   double reach = 0;
   std::size_t missing = wanted.size();
-  internal::grow_region(m_mesh, s, ws.in_region, ws.seen, ws.tentative, ws.region,
+  internal::grow_region(m_indexed.arrays, s, ws.in_region, ws.seen, ws.tentative, ws.region,
                         [&](int v, double d, std::size_t size) {
                           if (patch.kind() == Patch::Kind::vertex_set) {
                             if (missing == 0) return false;
@@ -219,30 +211,30 @@ template <class TM, class VPM>
 typename Exact_exponential_map<TM, VPM>::Result
 Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                   const Query_options& query) const {
-  const int s = internal::checked_source(m_mesh, source_index);
+  const int s = internal::checked_source(m_indexed.arrays, source_index);
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
+  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
   const Patch::Kind kind = patch.kind();
   const bool by_count = kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction;
-  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
   std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_mesh, patch, s);
+  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
 
   auto ws = m_workspaces.acquire([this] {
-    return std::make_unique<Workspace>(number_of_vertices(), m_mesh.face.size());
+    return std::make_unique<Workspace>(number_of_vertices(), m_indexed.arrays.face.size());
   });
   ws->entries.clear();
   ws->wanted.next_query();
   for (int v : wanted) ws->wanted.mark(v, 0);
   if ((by_count && target <= 1) || (kind == Patch::Kind::vertex_set && wanted.empty()))
-    return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+    return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
 
   // A hair more than the radius, so that rounding cannot drop a face that
   // a geodesic of length exactly R touches.
   const double radius = ball_radius(s, patch, target, wanted, *ws) * (1 + 1e-9);
   internal::Ball_submesh& ball = ws->ball;
-  internal::extract_ball_submesh(m_mesh, s, radius, ws->face_marks, ws->vertex_marks,
+  internal::extract_ball_submesh(m_indexed.arrays, s, radius, ws->face_marks, ws->vertex_marks,
                                  ws->face_queue, ball);
 
   // The selection may pinch at vertices outside the ball (two fans of
@@ -282,7 +274,7 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
     ws->entries.resize(target - 1);
   }
 
-  const internal::Vector3& ps = m_mesh.point[s];
+  const internal::Vector3& ps = m_indexed.arrays.point[s];
   for (internal::Polar_entry& e : ws->entries) {
     ws->path.clear();
     shortest_paths.shortest_path_points_to_source_points(
@@ -291,7 +283,7 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
     e.angle = frame.angle_of(first_direction(ws->path, ps, e.distance));
     e.vertex = ball.mesh_vertex[e.vertex];
   }
-  return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
 }
 
 }  // namespace expmap

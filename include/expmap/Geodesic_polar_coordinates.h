@@ -12,6 +12,7 @@
 #include <expmap/Patch.h>
 #include <expmap/internal/Fibonacci_vertex_queue.h>
 #include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -82,9 +83,8 @@ template <class TriangleMesh, class VertexPointMap = CGAL::Default>
 class Geodesic_polar_coordinates {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map = typename CGAL::Default::Get<
-      VertexPointMap,
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Vertex_point_map =
+      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
   using Result = Local_map<vertex_descriptor>;
 
   /// A vertex takes a new distance only if it is smaller by this relative
@@ -99,10 +99,7 @@ class Geodesic_polar_coordinates {
 
   /// As above, with an explicit vertex point map.
   Geodesic_polar_coordinates(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
-    m_descriptors.resize(num_vertices(tm));
-    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
-    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
+      : m_indexed(tm, vpm) {
   }
 
   /// Polar coordinates around `source` for the vertices of `patch`.
@@ -112,7 +109,7 @@ class Geodesic_polar_coordinates {
   ///         vertices out of range or outside the source's component.
   Result compute(vertex_descriptor source, const Patch& patch,
                  const Query_options& query = {}) const {
-    return compute_by_index(static_cast<std::size_t>(get(m_vertex_index, source)), patch, query);
+    return compute_by_index(m_indexed.index_of(source), patch, query);
   }
 
   /// As `compute()`, with the source given by its index in `vertices(tm)`.
@@ -120,7 +117,7 @@ class Geodesic_polar_coordinates {
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
-  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   struct Workspace {
@@ -152,12 +149,7 @@ class Geodesic_polar_coordinates {
   // Offers vertex j a distance through the edge (i, k) of one of its faces.
   void update(int j, int i, int k, const Propagation& run, Workspace& ws) const;
 
-  using Vertex_index_map =
-      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
-
-  Vertex_index_map m_vertex_index;
-  std::vector<vertex_descriptor> m_descriptors;
-  internal::Mesh_arrays m_mesh;
+  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -166,7 +158,7 @@ void Geodesic_polar_coordinates<TM, VPM>::update(int j, int i, int k, const Prop
                                                  Workspace& ws) const {
   using internal::operator-;
   if (j == run.source) return;
-  const auto& p = m_mesh.point;
+  const auto& p = m_indexed.arrays.point;
   double distance, angle;
   if (k == run.source || !ws.known.is_marked(k)) {
     // Through the edge (source, i) the virtual source is the source itself
@@ -197,16 +189,16 @@ typename Geodesic_polar_coordinates<TM, VPM>::Result
 Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                        const Query_options& query) const {
   using internal::operator-;
-  const int s = internal::checked_source(m_mesh, source_index);
+  const int s = internal::checked_source(m_indexed.arrays, source_index);
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
-  const internal::Source_one_ring ring = internal::source_one_ring(m_mesh, s, frame);
+  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
+  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, frame);
   const Patch::Kind kind = patch.kind();
   const bool by_count = kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction;
-  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
   std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_mesh, patch, s);
+  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
 
   auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(number_of_vertices()); });
   ws->queue.clear();
@@ -229,7 +221,7 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
     const int v = ring.vertex[i];
     if (ws->known.is_marked(v)) continue;  // a non-manifold source lists it twice
     ws->known.mark(v, 0);
-    ws->distance[v] = internal::norm(m_mesh.point[v] - m_mesh.point[s]);
+    ws->distance[v] = internal::norm(m_indexed.arrays.point[v] - m_indexed.arrays.point[s]);
     ws->angle[v] = ring.angle[i];
     if (ws->distance[v] <= run.limit) ws->queue.push_or_decrease(v, ws->distance[v]);
   }
@@ -246,8 +238,8 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
           (kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v) && --missing == 0);
       if (complete) run.limit = farthest_popped;
     }
-    for (int p = m_mesh.vertex_face_start[v]; p < m_mesh.vertex_face_start[v + 1]; ++p) {
-      const auto& f = m_mesh.face[m_mesh.vertex_face[p]];
+    for (int p = m_indexed.arrays.vertex_face_start[v]; p < m_indexed.arrays.vertex_face_start[v + 1]; ++p) {
+      const auto& f = m_indexed.arrays.face[m_indexed.arrays.vertex_face[p]];
       const int c = f[0] == v ? 0 : (f[1] == v ? 1 : 2);
       const int a = f[(c + 1) % 3], b = f[(c + 2) % 3];
       update(b, v, a, run, *ws);
@@ -269,7 +261,7 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
                      });
     ws->entries.resize(keep);
   }
-  return internal::assemble_local_map(s, ws->entries, m_descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
 }
 
 }  // namespace expmap

@@ -17,6 +17,7 @@
 #include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/Query_validation.h>
@@ -122,9 +123,8 @@ template <class TriangleMesh, class VertexPointMap = CGAL::Default,
 class Heat_exponential_map {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map = typename CGAL::Default::Get<
-      VertexPointMap,
-      typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
+  using Vertex_point_map =
+      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
   using Result = Local_map<vertex_descriptor>;
 
   /// Precomputes operators and both factorizations.
@@ -136,16 +136,7 @@ class Heat_exponential_map {
 
   /// As above, with an explicit vertex point map.
   Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options, Vertex_point_map vpm)
-      : m_options(options), m_vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
-    if (!(options.time_factor > 0) || !std::isfinite(options.time_factor))
-      throw Invalid_input("the time factor must be positive and finite (got " +
-                          std::to_string(options.time_factor) + ")");
-    if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
-      throw Invalid_input("region_growth must be at least 1 (got " +
-                          std::to_string(options.region_growth) + ")");
-    m_descriptors.resize(num_vertices(tm));
-    for (auto v : vertices(tm)) m_descriptors[get(m_vertex_index, v)] = v;
-    m_mesh = internal::make_mesh_arrays(tm, vpm, m_vertex_index);
+      : m_options(checked(options)), m_indexed(tm, vpm) {
     build_operators();
   }
 
@@ -156,7 +147,7 @@ class Heat_exponential_map {
   ///         larger time factor or a smaller patch).
   Result compute(vertex_descriptor source, const Patch& patch,
                  const Query_options& query = {}) const {
-    return compute_by_index(index_of(source), patch, query);
+    return compute_by_index(m_indexed.index_of(source), patch, query);
   }
 
   /// As `compute()`, with the source given by its index in `vertices(tm)`.
@@ -168,7 +159,7 @@ class Heat_exponential_map {
   /// Diffusion time of the heat the distance comes from.
   double distance_time_step() const { return m_distance_time_step; }
   /// Mean edge length h of the input mesh.
-  double mean_edge_length() const { return m_mesh.mean_edge_length; }
+  double mean_edge_length() const { return m_indexed.arrays.mean_edge_length; }
   /// Elimination-tree heights of the heat and Poisson factors.
   int heat_tree_height() const { return m_heat_local.tree_height(); }
   int poisson_tree_height() const { return m_poisson_local.tree_height(); }
@@ -178,7 +169,7 @@ class Heat_exponential_map {
     return m_heat_local.number_of_entries() + m_poisson_local.number_of_entries() +
            (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
-  std::size_t number_of_vertices() const { return m_descriptors.size(); }
+  std::size_t number_of_vertices() const { return m_indexed.number_of_vertices(); }
   const Heat_options& options() const { return m_options; }
 
  private:
@@ -208,12 +199,24 @@ class Heat_exponential_map {
     std::vector<double> divergence, potential;
   };
 
-  std::size_t index_of(vertex_descriptor v) const {
-    return static_cast<std::size_t>(get(m_vertex_index, v));
+  // The options, validated before anything is copied or factored.
+  static const Heat_options& checked(const Heat_options& options) {
+    auto check_time = [](double m, const char* name) {
+      if (!(m > 0) || !std::isfinite(m))
+        throw Invalid_input(std::string("the ") + name + " must be positive and finite (got " +
+                            std::to_string(m) + ")");
+    };
+    check_time(options.time_factor, "time factor");
+    if (options.distance_time_factor)
+      check_time(*options.distance_time_factor, "distance time factor");
+    if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
+      throw Invalid_input("region_growth must be at least 1 (got " +
+                          std::to_string(options.region_growth) + ")");
+    return options;
   }
 
   void build_operators() {
-    internal::Intrinsic_triangulation tri = m_mesh.intrinsic_triangulation();
+    internal::Intrinsic_triangulation tri = m_indexed.arrays.intrinsic_triangulation();
     if (m_options.laplacian == Laplacian_mode::intrinsic_delaunay)
       internal::make_intrinsic_delaunay(tri);
     m_tri = std::move(tri);
@@ -233,14 +236,14 @@ class Heat_exponential_map {
         m_options.regularization == Poisson_regularization::cgal_compatible ? 1e-8 : 0.0;
     internal::Sparse_matrix L = internal::cotan_laplacian(m_tri, m_shapes, corner_regularization);
     const Eigen::VectorXd mass = internal::lumped_mass(m_tri, m_shapes);
-    const double h2 = m_mesh.mean_edge_length * m_mesh.mean_edge_length;
+    const double h2 = m_indexed.arrays.mean_edge_length * m_indexed.arrays.mean_edge_length;
     m_time_step = m_options.time_factor * h2;
     m_distance_time_step = m_options.distance_time_factor.value_or(m_options.time_factor) * h2;
     m_separate_distance_heat = m_distance_time_step != m_time_step;
 
     std::vector<int> isolated;
-    for (std::size_t v = 0; v < m_mesh.number_of_vertices(); ++v)
-      if (m_mesh.is_isolated(static_cast<int>(v))) isolated.push_back(static_cast<int>(v));
+    for (std::size_t v = 0; v < m_indexed.arrays.number_of_vertices(); ++v)
+      if (m_indexed.arrays.is_isolated(static_cast<int>(v))) isolated.push_back(static_cast<int>(v));
 
     auto heat_matrix = [&](double t) {
       internal::Sparse_matrix heat = t * L;
@@ -255,12 +258,12 @@ class Heat_exponential_map {
     // Identity rows need a zero right-hand side: isolated vertices get no
     // divergence anyway, and a pinned vertex's potential must stay 0.
     std::vector<int> identity_rows = isolated;
-    m_is_pinned.assign(m_mesh.number_of_vertices(), 0);
+    m_is_pinned.assign(m_indexed.arrays.number_of_vertices(), 0);
     if (m_options.regularization == Poisson_regularization::pinned_vertex) {
-      std::vector<char> component_pinned(m_mesh.component_size.size(), 0);
-      for (std::size_t v = 0; v < m_mesh.number_of_vertices(); ++v) {
-        const int c = m_mesh.component[v];
-        if (!component_pinned[c] && !m_mesh.is_isolated(static_cast<int>(v))) {
+      std::vector<char> component_pinned(m_indexed.arrays.component_size.size(), 0);
+      for (std::size_t v = 0; v < m_indexed.arrays.number_of_vertices(); ++v) {
+        const int c = m_indexed.arrays.component[v];
+        if (!component_pinned[c] && !m_indexed.arrays.is_isolated(static_cast<int>(v))) {
           component_pinned[c] = 1;
           m_is_pinned[v] = 1;
           identity_rows.push_back(static_cast<int>(v));
@@ -308,13 +311,8 @@ class Heat_exponential_map {
                     const internal::Star_gradient& star, const std::vector<std::size_t>& order,
                     const Workspace& ws, Result& result) const;
 
-  using Vertex_index_map =
-      decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
-
   Heat_options m_options;
-  Vertex_index_map m_vertex_index;
-  std::vector<vertex_descriptor> m_descriptors;
-  internal::Mesh_arrays m_mesh;
+  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
   internal::Intrinsic_triangulation m_tri;
   std::vector<internal::Triangle_shape> m_shapes;
   std::vector<int> m_tri_face_start, m_tri_face;
@@ -427,7 +425,7 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
   // the candidates are taken generously; the query checks the result.
   const double radius_scale = std::sqrt(growth * candidate_excess) * 1.1;
   auto grow = [&](auto keep) {
-    internal::grow_region(m_mesh, s, ws.in_region, ws.seen, ws.tentative, ws.candidates, keep);
+    internal::grow_region(m_indexed.arrays, s, ws.in_region, ws.seen, ws.tentative, ws.candidates, keep);
   };
   if (patch.kind() == Patch::Kind::geodesic_radius) {
     const double limit = patch.radius() * radius_scale;
@@ -449,7 +447,7 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
     // heat, so a breadth-first search (no heap) is enough.
     const std::size_t budget = static_cast<std::size_t>(
         std::ceil(growth * candidate_excess * static_cast<double>(target))) + 16;
-    internal::grow_region_by_hops(m_mesh, s, ws.in_region, budget, ws.candidates);
+    internal::grow_region_by_hops(m_indexed.arrays, s, ws.in_region, budget, ws.candidates);
   }
 }
 
@@ -457,16 +455,16 @@ template <class TM, class VPM, class S>
 typename Heat_exponential_map<TM, VPM, S>::Result
 Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                    const Query_options& query) const {
-  const int s = internal::checked_source(m_mesh, source_index);
+  const int s = internal::checked_source(m_indexed.arrays, source_index);
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_mesh, s, reference);
-  const internal::Star_gradient star = internal::star_gradient(m_mesh, s, frame);
+  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
+  const internal::Star_gradient star = internal::star_gradient(m_indexed.arrays, s, frame);
   const std::size_t component =
-      static_cast<std::size_t>(m_mesh.component_size[m_mesh.component[s]]);
-  const std::size_t target = internal::patch_target_count(m_mesh, patch, s);
+      static_cast<std::size_t>(m_indexed.arrays.component_size[m_indexed.arrays.component[s]]);
+  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
   const std::vector<int> wanted = patch.kind() == Patch::Kind::vertex_set
-                                      ? internal::checked_vertex_set(m_mesh, patch, s)
+                                      ? internal::checked_vertex_set(m_indexed.arrays, patch, s)
                                       : std::vector<int>{};
 
   auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(*this); });
@@ -502,8 +500,8 @@ double Heat_exponential_map<TM, VPM, S>::boundary_distance(const Workspace& ws) 
   double boundary = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < ws.region.size(); ++i) {
     const int v = ws.region[i];
-    for (int p = m_mesh.neighbor_start[v]; p < m_mesh.neighbor_start[v + 1]; ++p)
-      if (!ws.in_region.is_marked(m_mesh.neighbor[p])) {
+    for (int p = m_indexed.arrays.neighbor_start[v]; p < m_indexed.arrays.neighbor_start[v + 1]; ++p)
+      if (!ws.in_region.is_marked(m_indexed.arrays.neighbor[p])) {
         boundary = std::min(boundary, ws.potential[i]);
         break;
       }
@@ -568,7 +566,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     entries.push_back({v, ws.potential[i], std::atan2(g[1], g[0])});
   }
   Solve_statistics statistics = result.statistics;
-  result = internal::assemble_local_map(s, entries, m_descriptors, frame);
+  result = internal::assemble_local_map(s, entries, m_indexed.descriptors, frame);
   result.statistics = statistics;
 }
 
