@@ -82,6 +82,8 @@ Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index so
   if (a.time_factor) options.time_factor = *a.time_factor;
   if (a.laplacian == std::string("intrinsic-delaunay"))
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
+  else if (a.laplacian == std::string("direct"))
+    options.laplacian = expmap::Laplacian_mode::direct;
   Run run = timed_run([&] { return expmap::Heat_exponential_map<Mesh>(mesh, options); }, source,
                       patch, query);
   std::ostringstream d;
@@ -170,8 +172,9 @@ std::string compute_help() {
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
-       "  --laplacian L        heat only: direct | intrinsic-delaunay; the latter is\n"
-       "                       robust on poorly shaped triangles (default: direct)\n"
+       "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
+       "                       robust on poorly shaped triangles\n"
+       "                       (default: intrinsic-delaunay)\n"
        "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"

@@ -88,7 +88,11 @@ struct Heat_options {
   /// Costs one more factorization: about 50% more precomputation time and
   /// memory. Default: `time_factor`.
   std::optional<double> distance_time_factor;
-  Laplacian_mode laplacian = Laplacian_mode::direct;
+  /// The intrinsic Delaunay triangulation keeps the heat positive and the
+  /// distance minimal at the source on meshes with obtuse triangles, and
+  /// gave fewer fold-overs on real meshes (doc/folds.md); on Delaunay meshes
+  /// both modes are the same.
+  Laplacian_mode laplacian = Laplacian_mode::intrinsic_delaunay;
   Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
   /// A query solves on a region about this many times larger (in vertex
   /// count) than the patch; the Poisson step's cut-off error lives in the
@@ -138,6 +142,9 @@ class Heat_exponential_map {
   Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options, Vertex_point_map vpm)
       : m_options(checked(options)), m_indexed(tm, vpm) {
     build_operators();
+    // One workspace ready for the first query: touching its O(n) memory for
+    // the first time costs page faults that belong to the precomputation.
+    m_workspaces.acquire([this] { return std::make_unique<Workspace>(*this); });
   }
 
   /// Geodesic polar coordinates around `source` for the vertices of `patch`.
@@ -396,7 +403,20 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool wh
       ws.rhs.push_back({ws.region[i], 0, ws.divergence[i]});
   ws.potential.resize(kept);
   stats += m_poisson_local.solve(ws.rhs, 1, ws.region.data(), kept, ws.potential.data(), ws.poisson_solve);
+  // The distance must be smallest at the source. Slightly negative values
+  // next to it are discretization error and are clamped to 0; a clearly
+  // negative one means the heat was not positive (cotan weights of obtuse,
+  // non-Delaunay triangles) and the whole field is unreliable.
   const double at_source = ws.potential[0];
+  std::size_t lowest = 0;
+  for (std::size_t i = 0; i < kept; ++i)
+    if (ws.potential[i] < ws.potential[lowest]) lowest = i;
+  if (ws.potential[lowest] - at_source < -0.5 * m_indexed.arrays.mean_edge_length)
+    throw Computation_error(
+        "the heat distance from source vertex " + std::to_string(s) +
+        " is smallest at vertex " + std::to_string(ws.region[lowest]) +
+        ", not at the source: the heat diffusion is not positive on this mesh's non-Delaunay "
+        "triangles; use Laplacian_mode::intrinsic_delaunay (the default) or a larger time factor");
   for (double& phi : ws.potential) phi = std::max(0.0, phi - at_source);
   return stats;
 }

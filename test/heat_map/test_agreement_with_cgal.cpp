@@ -26,6 +26,7 @@ Comparison compare_with_cgal(Surface_mesh& mesh, std::size_t source,
   options.time_factor = angle_time_factor;
   options.distance_time_factor = 1.0;  // CGAL's t = h^2
   options.regularization = regularization;
+  options.laplacian = expmap::Laplacian_mode::direct;  // CGAL's Direct mode
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
   const auto map = heat.compute_by_index(source, expmap::Patch::fraction(1.0));
 
