@@ -57,10 +57,13 @@ namespace expmap {
 /// that nearly cancel (near a cut locus) is stretched back to d_q /
 /// `dilation_bound`. Dijkstra distances exceed true ones by the dilation of
 /// the triangulation (below 2 for Delaunay triangulations; 1.08 on the
-/// regular grid, 1.28 with half its edges flipped), so on planar meshes the
-/// lower bound never bites; on curved ones it only catches averages that
-/// have already failed (seen on 20% patches of the armadillo, where
-/// geodesics from both sides of a limb meet).
+/// regular grid, 1.28 with half its edges flipped), so on planar meshes with
+/// dilation below 2 the lower bound never bites; on curved ones it only
+/// catches averages that have already failed (seen on 20% patches of the
+/// armadillo, where geodesics from both sides of a limb meet). Where the
+/// dilation exceeds 2 (a hexagonal grid with 47% of its edges flipped:
+/// doc/mesh_quality.md) the lower bound does bite and DEM is no longer
+/// exact on a plane (mean angle error 3e-4 rad there).
 ///
 /// Patches: a radius patch holds every vertex with |u| <= R; thanks to the
 /// guard no vertex with d > dilation_bound * R can qualify, so the search
