@@ -123,6 +123,24 @@ double wrap_angle(double a) {
   return a <= -pi ? a + 2 * pi : a;
 }
 
+/// |theta - theta_exact - rotation| per pair, where `rotation` (returned) is
+/// the circular mean of the differences: the maps may use different
+/// reference directions, and this constant is not an error.
+std::vector<double> angle_errors_up_to_rotation(const std::vector<double>& computed,
+                                                const std::vector<double>& exact,
+                                                double& rotation) {
+  double c = 0, s = 0;
+  for (std::size_t i = 0; i < computed.size(); ++i) {
+    c += std::cos(computed[i] - exact[i]);
+    s += std::sin(computed[i] - exact[i]);
+  }
+  rotation = std::atan2(s, c);
+  std::vector<double> errors;
+  for (std::size_t i = 0; i < computed.size(); ++i)
+    errors.push_back(std::abs(wrap_angle(computed[i] - exact[i] - rotation)));
+  return errors;
+}
+
 /// Portable uniform integer in [0, n) from std::mt19937's raw output.
 std::size_t uniform_below(std::mt19937& rng, std::size_t n) {
   const std::uint32_t m = static_cast<std::uint32_t>(n);
@@ -179,6 +197,22 @@ Mesh to_mesh(const expmap::Triangle_soup& soup) {
   Mesh mesh;
   expmap::soup_to_mesh(soup, mesh);
   return mesh;
+}
+
+/// The soup of a Surface_mesh (vertex and face order kept).
+expmap::Triangle_soup to_soup(const Mesh& mesh) {
+  expmap::Triangle_soup soup;
+  for (auto v : vertices(mesh)) {
+    const Point& p = mesh.point(v);
+    soup.points.push_back({{p.x(), p.y(), p.z()}});
+  }
+  for (auto f : faces(mesh)) {
+    std::array<int, 3> t{};
+    int c = 0;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = int(std::size_t(v));
+    soup.triangles.push_back(t);
+  }
+  return soup;
 }
 
 double mean_edge_length(const expmap::Triangle_soup& soup) {
@@ -371,15 +405,7 @@ Errors map_errors(const Map& map, std::size_t n, const std::vector<Reference_poi
   }
   e.points = dr.size();
   if (dr.empty()) return e;
-  double c = 0, s = 0;
-  for (std::size_t i = 0; i < computed.size(); ++i) {
-    c += std::cos(computed[i] - exact[i]);
-    s += std::sin(computed[i] - exact[i]);
-  }
-  e.rotation = std::atan2(s, c);
-  std::vector<double> da;
-  for (std::size_t i = 0; i < computed.size(); ++i)
-    da.push_back(std::abs(wrap_angle(computed[i] - exact[i] - e.rotation)));
+  const std::vector<double> da = angle_errors_up_to_rotation(computed, exact, e.rotation);
   e.distance = mean(dr);
   e.angle = mean(da);
   e.distance_max = *std::max_element(dr.begin(), dr.end());
@@ -502,18 +528,7 @@ expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed) {
   }
   Mesh hull;
   CGAL::convex_hull_3(points.begin(), points.end(), hull);
-  expmap::Triangle_soup soup;
-  for (auto v : vertices(hull)) {
-    const Point& p = hull.point(v);
-    soup.points.push_back({{p.x(), p.y(), p.z()}});
-  }
-  for (auto f : faces(hull)) {
-    std::array<int, 3> t{};
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(hull.halfedge(f), hull)) t[c++] = int(std::size_t(v));
-    soup.triangles.push_back(t);
-  }
-  return soup;
+  return to_soup(hull);
 }
 
 /// Irregular Delaunay height field: the points of a hexagonal lattice of
@@ -1666,20 +1681,7 @@ void run_folds(const Settings& settings) {
     }
     res.vertices = num_vertices(mesh);
     res.h = mean_edge_length(mesh);
-    {
-      expmap::Triangle_soup soup;
-      for (auto v : vertices(mesh)) {
-        const Point& p = mesh.point(v);
-        soup.points.push_back({{p.x(), p.y(), p.z()}});
-      }
-      for (auto f : faces(mesh)) {
-        std::array<int, 3> t{};
-        int k = 0;
-        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[k++] = int(std::size_t(v));
-        soup.triangles.push_back(t);
-      }
-      res.non_delaunay = non_delaunay_fraction(soup);
-    }
+    res.non_delaunay = non_delaunay_fraction(to_soup(mesh));
     std::cout << res.name << ": " << res.vertices << " vertices, " << num_faces(mesh)
               << " faces, closed manifold, h = " << res.h << std::endl;
 
@@ -1790,15 +1792,8 @@ void run_folds(const Settings& settings) {
             computed.push_back(map.angle[i]);
             exact.push_back(exact_it->second.angle[std::size_t(j)]);
           }
-          double c = 0, sn = 0;
-          for (std::size_t i = 0; i < computed.size(); ++i) {
-            c += std::cos(computed[i] - exact[i]);
-            sn += std::sin(computed[i] - exact[i]);
-          }
-          const double rotation = std::atan2(sn, c);
-          std::vector<double> da;
-          for (std::size_t i = 0; i < computed.size(); ++i)
-            da.push_back(std::abs(wrap_angle(computed[i] - exact[i] - rotation)));
+          double rotation = 0;
+          const std::vector<double> da = angle_errors_up_to_rotation(computed, exact, rotation);
           ed = mean(dr) / res.h;
           ea = mean(da);
           res.stats[method.key].distance_error.push_back(ed);
