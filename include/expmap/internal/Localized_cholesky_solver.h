@@ -169,6 +169,7 @@ class Localized_cholesky_solver {
     if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws);
     if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, width);
     if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, width);
+    if (width <= 12) return solve_block<12>(entries, rows, row_count, out, ws, width);
     return solve_block<16>(entries, rows, row_count, out, ws, width);
   }
 
@@ -227,28 +228,7 @@ class Localized_cholesky_solver {
     for (const int k : ws.m_forward_nodes) {
       const auto& sn = F.supernode[k];
       const int first = ws.m_forward_entry[k];
-      double* ys = row_of(sn.first_column);  // the supernode's rows, contiguous
-      const double* diagonal = F.value.data() + sn.diagonal;
-      for (int c = first; c < sn.ncol; ++c) {
-        double* yc = ys + c * W;
-        const double inverse = m_inverse_diagonal[sn.first_column + c];
-        for (int w = 0; w < W; ++w) yc[w] *= inverse;
-        for (int r = c + 1; r < sn.ncol; ++r) {
-          const double l = diagonal[r * sn.ncol + c];
-          double* yr = ys + r * W;
-          for (int w = 0; w < W; ++w) yr[w] -= l * yc[w];
-        }
-      }
-      const double* below = F.value.data() + sn.below;
-      const int* below_rows = F.row_index.data() + sn.below_rows;
-      for (int t = 0; t < sn.nbelow; ++t) {
-        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
-        std::array<double, W> acc{};
-        for (int c = first; c < sn.ncol; ++c)
-          for (int w = 0; w < W; ++w) acc[w] += l[c] * ys[c * W + w];
-        double* yt = row_of(below_rows[t]);
-        for (int w = 0; w < W; ++w) yt[w] -= acc[w];
-      }
+      forward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
       stats.factor_entries += entries_of(sn, first);
     }
@@ -259,26 +239,7 @@ class Localized_cholesky_solver {
     for (auto it = ws.m_backward_nodes.rbegin(); it != ws.m_backward_nodes.rend(); ++it) {
       const auto& sn = F.supernode[*it];
       const int first = ws.m_backward_entry[*it];
-      double* ys = row_of(sn.first_column);
-      const double* below = F.value.data() + sn.below;
-      const int* below_rows = F.row_index.data() + sn.below_rows;
-      for (int t = 0; t < sn.nbelow; ++t) {
-        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
-        const double* xt = row_of(below_rows[t]);
-        for (int c = first; c < sn.ncol; ++c)
-          for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * xt[w];
-      }
-      const double* diagonal = F.value.data() + sn.diagonal;
-      for (int c = sn.ncol - 1; c >= first; --c) {
-        double* yc = ys + c * W;
-        for (int r = c + 1; r < sn.ncol; ++r) {
-          const double l = diagonal[r * sn.ncol + c];
-          const double* yr = ys + r * W;
-          for (int w = 0; w < W; ++w) yc[w] -= l * yr[w];
-        }
-        const double inverse = m_inverse_diagonal[sn.first_column + c];
-        for (int w = 0; w < W; ++w) yc[w] *= inverse;
-      }
+      backward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
       stats.factor_entries += entries_of(sn, first);
     }
@@ -298,6 +259,96 @@ class Localized_cholesky_solver {
     for (const int k : ws.m_forward_nodes) clear(k, ws.m_forward_entry[k]);
     for (const int k : ws.m_backward_nodes) clear(k, ws.m_backward_entry[k]);
     return stats;
+  }
+
+  // out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
+  // independent partial sums: without them every multiply-add waits for the
+  // previous one (the compiler may not reassociate floating-point sums), and
+  // a one-column solve runs at the latency of the adder, not its throughput.
+  template <int W>
+  static void subtract_dot(const double* l, const double* y, int begin, int end, double* out) {
+    constexpr int lanes = W == 1 ? 4 : 2;
+    std::array<std::array<double, W>, lanes> acc{};
+    int c = begin;
+    for (; c + lanes <= end; c += lanes)
+      for (int j = 0; j < lanes; ++j)
+        for (int w = 0; w < W; ++w) acc[j][w] += l[c + j] * y[(c + j) * W + w];
+    for (; c < end; ++c)
+      for (int w = 0; w < W; ++w) acc[0][w] += l[c] * y[c * W + w];
+    for (int j = 1; j < lanes; ++j)
+      for (int w = 0; w < W; ++w) acc[0][w] += acc[j][w];
+    for (int w = 0; w < W; ++w) out[w] -= acc[0][w];
+  }
+
+  // out[j * W + w] -= sum over t < nbelow of l[t * stride + j] * y[rows[t] * W + w]
+  // for the C columns j of a supernode's rows below (row-major, `stride`
+  // columns per row): part of the back substitution.
+  template <int W, int C>
+  static void subtract_below(const double* l, int stride, const int* rows, int nbelow,
+                             const double* y, double* out) {
+    std::array<std::array<double, W>, C> acc{};
+    for (int t = 0; t < nbelow; ++t) {
+      const double* lt = l + static_cast<std::size_t>(t) * stride;
+      const double* xt = y + static_cast<std::size_t>(rows[t]) * W;
+      for (int j = 0; j < C; ++j)
+        for (int w = 0; w < W; ++w) acc[j][w] += lt[j] * xt[w];
+    }
+    for (int j = 0; j < C; ++j)
+      for (int w = 0; w < W; ++w) out[j * W + w] -= acc[j][w];
+  }
+
+  // Forward substitution through one supernode from its column `first` on
+  // (the earlier ones are zero): the diagonal block row by row (a row of the
+  // row-major block is contiguous), then the rows below it, each one dot
+  // product. `ys` are the supernode's own rows of the block `y`.
+  template <int W>
+  void forward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
+                         double* y) const {
+    const auto& F = m_factor;
+    const double* diagonal = F.value.data() + sn.diagonal;
+    for (int r = first; r < sn.ncol; ++r) {
+      double* yr = ys + r * W;
+      subtract_dot<W>(diagonal + static_cast<std::size_t>(r) * sn.ncol, ys, first, r, yr);
+      const double inverse = m_inverse_diagonal[sn.first_column + r];
+      for (int w = 0; w < W; ++w) yr[w] *= inverse;
+    }
+    const double* below = F.value.data() + sn.below;
+    const int* below_rows = F.row_index.data() + sn.below_rows;
+    for (int t = 0; t < sn.nbelow; ++t)
+      subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
+                      y + static_cast<std::size_t>(below_rows[t]) * W);
+  }
+
+  // Back substitution through one supernode, for its columns from `first`
+  // on: the rows below it (already solved: they belong to ancestors) are
+  // subtracted, then the diagonal block is solved bottom-up, each solved row
+  // subtracted from the rows above it (row-contiguous in the row-major block).
+  template <int W>
+  void backward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
+                          const double* y) const {
+    const auto& F = m_factor;
+    const double* below = F.value.data() + sn.below;
+    const int* below_rows = F.row_index.data() + sn.below_rows;
+    // The rows below, a few columns at a time with their sums in registers:
+    // updating ys in memory once per row below would chain every update of
+    // a column through a store and a load, which is what a narrow supernode
+    // (most of the tree) would otherwise cost.
+    constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
+    int c = first;
+    for (; c + block <= sn.ncol; c += block)
+      subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+    for (; c < sn.ncol; ++c)
+      subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+    const double* diagonal = F.value.data() + sn.diagonal;
+    for (int r = sn.ncol - 1; r >= first; --r) {
+      double* yr = ys + r * W;
+      const double inverse = m_inverse_diagonal[sn.first_column + r];
+      std::array<double, W> xr;
+      for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
+      const double* l = diagonal + static_cast<std::size_t>(r) * sn.ncol;
+      for (int a = first; a < r; ++a)
+        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
+    }
   }
 
   // Entries of the supernode's columns from `first` on.
