@@ -14,6 +14,7 @@
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Cotan_operators.h>
+#include <expmap/internal/Faces_by_smallest_corner.h>
 #include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
@@ -191,10 +192,9 @@ class Heat_exponential_map {
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
-      face_seen.resize(owner.m_tri.number_of_faces());
     }
     internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
-    internal::Vertex_marks in_region, seen, wanted, face_seen;
+    internal::Vertex_marks in_region, seen, wanted;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
     std::vector<int> region;           // the hottest candidates: where distance is integrated
@@ -203,6 +203,7 @@ class Heat_exponential_map {
     std::vector<internal::Rhs_entry> rhs;
     std::vector<double> heat;          // heat from the source on the candidates
     std::vector<double> star_heat;     // heat from the star on the patch, row-major
+    std::vector<double> region_heat;   // ws.heat at each region vertex
     std::vector<double> divergence, potential;
   };
 
@@ -226,23 +227,13 @@ class Heat_exponential_map {
     internal::Intrinsic_triangulation tri = m_indexed.arrays.intrinsic_triangulation();
     if (m_options.laplacian == Laplacian_mode::intrinsic_delaunay)
       internal::make_intrinsic_delaunay(tri);
-    m_tri = std::move(tri);
-    m_shapes = internal::triangle_shapes(m_tri);
-    std::vector<int> counts(m_tri.number_of_vertices, 0);
-    for (const auto& f : m_tri.face)
-      for (int v : f) ++counts[v];
-    internal::build_compressed_rows(
-        m_tri.number_of_vertices, counts,
-        [&](auto push) {
-          for (std::size_t f = 0; f < m_tri.face.size(); ++f)
-            for (int v : m_tri.face[f]) push(v, static_cast<int>(f));
-        },
-        m_tri_face_start, m_tri_face);
+    const std::vector<internal::Triangle_shape> shapes = internal::triangle_shapes(tri);
+    m_faces = internal::Faces_by_smallest_corner(tri, shapes);
 
     const double corner_regularization =
         m_options.regularization == Poisson_regularization::cgal_compatible ? 1e-8 : 0.0;
-    internal::Sparse_matrix L = internal::cotan_laplacian(m_tri, m_shapes, corner_regularization);
-    const Eigen::VectorXd mass = internal::lumped_mass(m_tri, m_shapes);
+    internal::Sparse_matrix L = internal::cotan_laplacian(tri, shapes, corner_regularization);
+    const Eigen::VectorXd mass = internal::lumped_mass(tri, shapes);
     const double h2 = m_indexed.arrays.mean_edge_length * m_indexed.arrays.mean_edge_length;
     m_time_step = m_options.time_factor * h2;
     m_distance_time_step = m_options.distance_time_factor.value_or(m_options.time_factor) * h2;
@@ -320,9 +311,7 @@ class Heat_exponential_map {
 
   Heat_options m_options;
   internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
-  internal::Intrinsic_triangulation m_tri;
-  std::vector<internal::Triangle_shape> m_shapes;
-  std::vector<int> m_tri_face_start, m_tri_face;
+  internal::Faces_by_smallest_corner m_faces;  // of the triangulation the operators are built on
   std::vector<char> m_is_pinned;  // one vertex per component in the Poisson system
   double m_time_step = 0, m_distance_time_step = 0;
   bool m_separate_distance_heat = false;
@@ -368,31 +357,32 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool wh
   if (source_row == ws.heat_row.end()) ws.heat_row.back() = 0;
   std::sort(ws.heat_row.begin(), ws.heat_row.end());
   ws.region.resize(kept);
+  ws.region_heat.resize(kept);
   ws.in_region.next_query();
   for (std::size_t i = 0; i < kept; ++i) {
     ws.region[i] = ws.candidates[ws.heat_row[i]];
+    ws.region_heat[i] = ws.heat[ws.heat_row[i]];
     ws.in_region.mark(ws.region[i], static_cast<int>(i));
   }
 
   // Step 2: divergence of the normalized heat gradient, from the faces whose
   // three corners lie in the region (so the right-hand side sums to zero).
   ws.divergence.assign(kept, 0.0);
-  ws.face_seen.next_query();
   for (std::size_t i = 0; i < kept; ++i) {
     const int v = ws.region[i];
-    for (int p = m_tri_face_start[v]; p < m_tri_face_start[v + 1]; ++p) {
-      const int f = m_tri_face[p];
-      if (ws.face_seen.is_marked(f)) continue;
-      ws.face_seen.mark(f, 0);
-      const auto& c = m_tri.face[f];
+    for (auto f = m_faces.begin(v); f != m_faces.end(v); ++f) {
+      const auto& c = f->corner;
       if (!ws.in_region.is_marked(c[0]) || !ws.in_region.is_marked(c[1]) ||
           !ws.in_region.is_marked(c[2]))
         continue;
+      std::array<int, 3> at;
       std::array<double, 3> u;
-      for (int k = 0; k < 3; ++k)
-        u[k] = ws.heat[ws.heat_row[static_cast<std::size_t>(ws.in_region.value(c[k]))]];
-      const auto div = internal::normalized_gradient_divergence(m_shapes[f], u);
-      for (int k = 0; k < 3; ++k) ws.divergence[ws.in_region.value(c[k])] += div[k];
+      for (int k = 0; k < 3; ++k) {
+        at[k] = ws.in_region.value(c[k]);
+        u[k] = ws.region_heat[static_cast<std::size_t>(at[k])];
+      }
+      const auto div = internal::normalized_gradient_divergence(f->shape, u);
+      for (int k = 0; k < 3; ++k) ws.divergence[static_cast<std::size_t>(at[k])] += div[k];
     }
   }
 
