@@ -18,6 +18,7 @@
 #include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
@@ -142,6 +143,11 @@ class Heat_exponential_map {
   /// As above, with an explicit vertex point map.
   Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options, Vertex_point_map vpm)
       : m_options(checked(options)), m_indexed(tm, vpm) {
+    // Queries work on vertices renumbered along a space-filling curve (see
+    // internal::locality_order); sources, patches and results use the
+    // user's indices.
+    m_indexed.arrays = internal::renumbered_mesh_arrays(m_indexed.arrays,
+                                                        internal::locality_order(m_indexed.arrays));
     build_operators();
     // One workspace ready for the first query: touching its O(n) memory for
     // the first time costs page faults that belong to the precomputation.
@@ -403,8 +409,8 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool wh
     if (ws.potential[i] < ws.potential[lowest]) lowest = i;
   if (ws.potential[lowest] - at_source < -0.5 * m_indexed.arrays.mean_edge_length)
     throw Computation_error(
-        "the heat distance from source vertex " + std::to_string(s) +
-        " is smallest at vertex " + std::to_string(ws.region[lowest]) +
+        "the heat distance from source vertex " + std::to_string(m_indexed.arrays.to_original(s)) +
+        " is smallest at vertex " + std::to_string(m_indexed.arrays.to_original(ws.region[lowest])) +
         ", not at the source: the heat diffusion is not positive on this mesh's non-Delaunay "
         "triangles; use Laplacian_mode::intrinsic_delaunay (the default) or a larger time factor");
   for (double& phi : ws.potential) phi = std::max(0.0, phi - at_source);
@@ -563,7 +569,8 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     const int v = ws.region[i];
     const double* h = ws.star_heat.data() + p * width;
     if (!(std::abs(h[0]) > std::numeric_limits<double>::min()))
-      throw Computation_error("heat diffusion underflows at vertex " + std::to_string(v) +
+      throw Computation_error("heat diffusion underflows at vertex " +
+                              std::to_string(m_indexed.arrays.to_original(v)) +
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
     if (v == s) continue;
@@ -573,10 +580,12 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                          std::all_of(h, h + width, [](double x) { return x > 0; });
     for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
     const auto g = star.apply(values.data());
-    entries.push_back({v, ws.potential[i], std::atan2(g[1], g[0])});
+    entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)), ws.potential[i],
+                       std::atan2(g[1], g[0])});
   }
   Solve_statistics statistics = result.statistics;
-  result = internal::assemble_local_map(s, entries, m_indexed.descriptors, frame);
+  result = internal::assemble_local_map(static_cast<int>(m_indexed.arrays.to_original(s)), entries,
+                                        m_indexed.descriptors, frame);
   result.statistics = statistics;
 }
 

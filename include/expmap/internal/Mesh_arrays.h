@@ -37,8 +37,20 @@ struct Mesh_arrays {
   std::vector<int> component;                       // connected component of each vertex
   std::vector<int> component_size;
   double mean_edge_length = 0;
+  /// Empty unless the vertices were renumbered (`renumbered_mesh_arrays`):
+  /// then the index in the user's mesh of each vertex, and its inverse.
+  std::vector<int> original_index, index_of_original;
 
   std::size_t number_of_vertices() const { return point.size(); }
+  /// The vertex an index of the user's mesh (the order of `vertices(tm)`)
+  /// is stored as, and back.
+  int from_original(std::size_t v) const {
+    return index_of_original.empty() ? static_cast<int>(v) : index_of_original[v];
+  }
+  std::size_t to_original(int v) const {
+    return original_index.empty() ? static_cast<std::size_t>(v)
+                                  : static_cast<std::size_t>(original_index[v]);
+  }
   bool is_isolated(int v) const { return vertex_face_start[v] == vertex_face_start[v + 1]; }
   int degree(int v) const { return neighbor_start[v + 1] - neighbor_start[v]; }
 
@@ -125,6 +137,34 @@ inline void compute_adjacency(Mesh_arrays& m) {
         }
     m.component_size.push_back(static_cast<int>(queue.size()));
   }
+}
+
+/// The same mesh with vertex i of the result being vertex `order[i]` of `m`
+/// (faces keep their order and orientation). Error messages and results
+/// report vertices by their index in the user's mesh (`to_original`).
+inline Mesh_arrays renumbered_mesh_arrays(const Mesh_arrays& m, const std::vector<int>& order) {
+  const std::size_t n = m.number_of_vertices();
+  Mesh_arrays r;
+  r.original_index.resize(n);
+  r.index_of_original.resize(n);
+  r.point.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const int old = order[i];
+    r.original_index[i] = static_cast<int>(m.to_original(old));
+    r.index_of_original[r.original_index[i]] = static_cast<int>(i);
+    r.point[i] = m.point[old];
+  }
+  std::vector<int> new_of_old(n);
+  for (std::size_t i = 0; i < n; ++i) new_of_old[order[i]] = static_cast<int>(i);
+  r.face.reserve(m.face.size());
+  for (auto corners : m.face) {
+    for (int& v : corners) v = new_of_old[v];
+    std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
+    r.face.push_back(corners);
+  }
+  compute_adjacency(r);
+  r.mean_edge_length = m.mean_edge_length;  // the same edges, summed in another order
+  return r;
 }
 
 /// Rejects faces whose area is negligible against their longest edge: their

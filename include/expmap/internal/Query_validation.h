@@ -16,31 +16,37 @@ namespace internal {
 
 /// The checks every method makes on a query before touching the mesh, with
 /// the same messages for all of them.
+/// Sources and patch vertices are given, and named in messages, by their
+/// index in the user's mesh; the functions return the index `m` stores them
+/// at (the same unless `m` was renumbered).
 /// \throws Invalid_input if `source` is out of range or isolated.
 inline int checked_source(const Mesh_arrays& m, std::size_t source) {
   const std::size_t n = m.number_of_vertices();
   if (source >= n)
     throw Invalid_input("source vertex " + std::to_string(source) +
                         " is out of range (the mesh has " + std::to_string(n) + " vertices)");
-  const int s = static_cast<int>(source);
+  const int s = m.from_original(source);
   if (m.is_isolated(s))
-    throw Invalid_input("source vertex " + std::to_string(s) + " is isolated (no incident face)");
+    throw Invalid_input("source vertex " + std::to_string(source) +
+                        " is isolated (no incident face)");
   return s;
 }
 
-/// The distinct vertices of a vertex-set patch, the source excluded.
+/// The distinct vertices of a vertex-set patch, the source `s` (as stored)
+/// excluded.
 /// \throws Invalid_input if one is out of range or not connected to `s`.
 inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& patch, int s) {
   const std::size_t n = m.number_of_vertices();
   std::vector<int> wanted;
-  for (std::size_t v : patch.vertices()) {
-    if (v >= n)
-      throw Invalid_input("patch vertex " + std::to_string(v) + " is out of range (the mesh has " +
-                          std::to_string(n) + " vertices)");
+  for (std::size_t original : patch.vertices()) {
+    if (original >= n)
+      throw Invalid_input("patch vertex " + std::to_string(original) +
+                          " is out of range (the mesh has " + std::to_string(n) + " vertices)");
+    const int v = m.from_original(original);
     if (m.component[v] != m.component[s])
-      throw Invalid_input("patch vertex " + std::to_string(v) +
-                          " is not connected to source vertex " + std::to_string(s));
-    if (static_cast<int>(v) != s) wanted.push_back(static_cast<int>(v));
+      throw Invalid_input("patch vertex " + std::to_string(original) +
+                          " is not connected to source vertex " + std::to_string(m.to_original(s)));
+    if (v != s) wanted.push_back(v);
   }
   std::sort(wanted.begin(), wanted.end());
   wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
