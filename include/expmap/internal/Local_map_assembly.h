@@ -36,9 +36,12 @@ template <class VertexDescriptor>
 Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,
                                                const Tangent_frame& frame) {
-  std::sort(entries.begin(), entries.end(), [](const Polar_entry& a, const Polar_entry& b) {
+  auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
-  });
+  };
+  // Methods that select their patch by distance pass it sorted already.
+  if (!std::is_sorted(entries.begin(), entries.end(), nearer))
+    std::sort(entries.begin(), entries.end(), nearer);
   Local_map<VertexDescriptor> map;
   map.source = descriptors[source];
   map.normal = frame.normal;

@@ -37,6 +37,7 @@ struct Mesh_arrays {
   std::vector<int> component;                       // connected component of each vertex
   std::vector<int> component_size;
   double mean_edge_length = 0;
+  int max_degree = 0;
   /// Empty unless the vertices were renumbered (`renumbered_mesh_arrays`):
   /// then the index in the user's mesh of each vertex, and its inverse.
   std::vector<int> original_index, index_of_original;
@@ -104,6 +105,7 @@ inline void compute_adjacency(Mesh_arrays& m) {
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
     m.neighbor.insert(m.neighbor.end(), candidates.begin(), candidates.end());
+    m.max_degree = std::max(m.max_degree, static_cast<int>(candidates.size()));
     m.neighbor_start[v + 1] = static_cast<int>(m.neighbor.size());
   }
 
