@@ -35,6 +35,9 @@
 //   floor_ratio               heat only: median over queries of ms / floor_ms
 //                             (whole query time over the floor: an upper
 //                             bound of solve time / floor)
+//   solve_floor_ratio         heat only: median over queries of solve_ms /
+//                             floor_ms, solve_ms the time inside the localized
+//                             triangular solves (Solve_statistics::solve_seconds)
 //   queries, failures         successful and failed queries in the row
 // --stats (one row per mesh):
 //   mesh, vertices, faces
@@ -50,7 +53,7 @@
 // --detail (one row per timed query):
 //   mesh, method, fraction, source, patch_vertices, ms, and for heat and
 //   heat-full forward_nodes, backward_nodes, factor_entries (Solve_statistics)
-//   and stream_floor_ms. heat-full rows have fraction 1 and the size of the
+//   and stream_floor_ms, solve_ms. heat-full rows have fraction 1 and the size of the
 //   whole map.
 
 #include "Bench_options.h"
@@ -125,6 +128,7 @@ struct Summary_row {
   double median_ms = nan_value, p90_ms = nan_value;
   double us_per_patch_vertex = nan_value;
   double factor_entries = nan_value, floor_ms = nan_value, floor_ratio = nan_value;
+  double solve_floor_ratio = nan_value;
   std::size_t queries = 0, failures = 0;
 };
 
@@ -277,7 +281,7 @@ Summary_row summarize(const std::string& mesh, std::size_t n, const std::string&
   row.vertices = n;
   row.method = method;
   row.fraction = fraction;
-  std::vector<double> ms, sizes, entries, floors, ratios;
+  std::vector<double> ms, sizes, entries, floors, ratios, solve_ratios;
   for (const Query_record* r : records) {
     if (std::isnan(r->ms)) {
       ++row.failures;
@@ -288,7 +292,10 @@ Summary_row summarize(const std::string& mesh, std::size_t n, const std::string&
     if (!std::isnan(r->floor_ms)) {
       entries.push_back(static_cast<double>(r->statistics.factor_entries));
       floors.push_back(r->floor_ms);
-      if (r->floor_ms > 0) ratios.push_back(r->ms / r->floor_ms);
+      if (r->floor_ms > 0) {
+        ratios.push_back(r->ms / r->floor_ms);
+        solve_ratios.push_back(1e3 * r->statistics.solve_seconds / r->floor_ms);
+      }
     }
   }
   row.queries = ms.size();
@@ -299,6 +306,7 @@ Summary_row summarize(const std::string& mesh, std::size_t n, const std::string&
   row.factor_entries = median(entries);
   row.floor_ms = median(floors);
   row.floor_ratio = median(ratios);
+  row.solve_floor_ratio = median(solve_ratios);
   return row;
 }
 
@@ -308,13 +316,13 @@ class Benchmark {
     open(m_csv, options.csv,
          "mesh,vertices,method,fraction,patch_vertices,median_ms,p90_ms,"
          "us_per_patch_vertex,median_factor_entries,median_stream_floor_ms,floor_ratio,"
-         "queries,failures");
+         "queries,failures,solve_floor_ratio");
     open(m_stats, options.stats,
          "mesh,vertices,faces,precompute_s,peak_rss_mb,heat_tree_height,poisson_tree_height,"
          "factor_nonzeros,mesh_rss_mb,hwm_reset");
     open(m_detail, options.detail,
          "mesh,method,fraction,source,patch_vertices,ms,forward_nodes,backward_nodes,"
-         "factor_entries,stream_floor_ms");
+         "factor_entries,stream_floor_ms,solve_ms");
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
   }
 
@@ -486,7 +494,7 @@ class Benchmark {
               << fmt(r.patch_vertices, 12) << "," << fmt(r.median_ms) << "," << fmt(r.p90_ms)
               << "," << fmt(r.us_per_patch_vertex) << "," << fmt(r.factor_entries, 12) << ","
               << fmt(r.floor_ms) << "," << fmt(r.floor_ratio) << "," << r.queries << ","
-              << r.failures << "\n";
+              << r.failures << "," << fmt(r.solve_floor_ratio) << "\n";
       m_csv << std::flush;
     }
     if (m_detail.is_open()) {
@@ -496,9 +504,10 @@ class Benchmark {
                  << q.patch_vertices << "," << fmt(q.ms) << ",";
         if (heat)
           m_detail << q.statistics.forward_nodes << "," << q.statistics.backward_nodes << ","
-                   << q.statistics.factor_entries << "," << fmt(q.floor_ms);
+                   << q.statistics.factor_entries << "," << fmt(q.floor_ms) << ","
+                   << fmt(1e3 * q.statistics.solve_seconds);
         else
-          m_detail << ",,,";
+          m_detail << ",,,,";
         m_detail << "\n";
       }
       m_detail << std::flush;
@@ -554,20 +563,27 @@ class Benchmark {
       if (std::isfinite(worst)) std::cout << "  smallest speedup: " << fixed(worst, 1) << "x\n";
     }
     if (has("heat")) {
-      header("heat query time / stream floor (median over sources; whole query time, so an "
-             "upper bound on solve / floor):");
-      double worst = 0;
-      for (const auto& m : meshes) {
-        std::cout << pad(m, 18, true);
-        for (double f : fractions) {
-          const auto* a = find_row(m, "heat", f);
-          const double x = a ? a->floor_ratio : nan_value;
-          if (!std::isnan(x)) worst = std::max(worst, x);
-          std::cout << pad(fixed(x, 2), 10);
+      // One row per mesh of a per-row ratio of the heat method, with its largest value.
+      auto ratio_table = [&](const std::string& title, double Summary_row::*ratio) {
+        header(title);
+        double worst = 0;
+        for (const auto& m : meshes) {
+          std::cout << pad(m, 18, true);
+          for (double f : fractions) {
+            const auto* a = find_row(m, "heat", f);
+            const double x = a ? a->*ratio : nan_value;
+            if (!std::isnan(x)) worst = std::max(worst, x);
+            std::cout << pad(fixed(x, 2), 10);
+          }
+          std::cout << "\n";
         }
-        std::cout << "\n";
-      }
-      if (worst > 0) std::cout << "  largest ratio: " << fixed(worst, 2) << "\n";
+        if (worst > 0) std::cout << "  largest ratio: " << fixed(worst, 2) << "\n";
+      };
+      ratio_table("heat query time / stream floor (median over sources; whole query time, so an "
+                  "upper bound on solve / floor):",
+                  &Summary_row::floor_ratio);
+      ratio_table("heat time inside the localized solves / stream floor (median over sources):",
+                  &Summary_row::solve_floor_ratio);
     }
     // Per patch vertex cost of every method, and relative to the reference
     // mesh (armadillo if benchmarked, else the first).

@@ -18,11 +18,14 @@ struct Solve_statistics {
   std::size_t forward_nodes = 0;   ///< columns of L visited by L y = b
   std::size_t backward_nodes = 0;  ///< columns of L visited by L^T x = y
   std::size_t factor_entries = 0;  ///< stored entries of L read, both passes
+  /// Wall-clock time spent in the solves (not in the rest of the query).
+  double solve_seconds = 0;
 
   Solve_statistics& operator+=(const Solve_statistics& other) {
     forward_nodes += other.forward_nodes;
     backward_nodes += other.backward_nodes;
     factor_entries += other.factor_entries;
+    solve_seconds += other.solve_seconds;
     return *this;
   }
 };
