@@ -74,7 +74,15 @@ enum class Angle_estimator {
   /// is less biased: on the unit icosphere (40,962 vertices) it halves the
   /// worst mean angle error at m = 1 and m = 10 (doc/time_factor.md).
   /// Falls back to `heat_gradient` where some heat value is not positive.
-  log_heat_gradient
+  log_heat_gradient,
+  /// The gradient of the logarithm of the heat from a quadratic fitted by
+  /// least squares on the star of the source, instead of the area-weighted
+  /// piecewise linear gradient: exact for quadratics, so an irregular
+  /// one-ring does not bias the direction. Up to 2.9x smaller angle errors
+  /// on jittered Delaunay meshes, but more fold-overs on real meshes
+  /// (doc/manual.md, section 2). Falls back to `log_heat_gradient` at
+  /// sources with fewer than five neighbours.
+  log_heat_quadratic_fit
 };
 
 /// \ingroup PkgExpmapRef
@@ -305,6 +313,14 @@ class Heat_exponential_map {
   // Solves the heat from the source and its neighbours for the patch
   // vertices `ws.patch`: fills ws.star_heat.
   Solve_statistics solve_star_heat(const internal::Star_gradient& star, Workspace& ws) const;
+  // The linear map from heat values on the star of s to their gradient at
+  // s, for the chosen angle estimator.
+  internal::Star_gradient source_star_gradient(int s, const internal::Tangent_frame& frame) const {
+    if (m_options.angle_estimator == Angle_estimator::log_heat_quadratic_fit)
+      if (auto fitted = internal::quadratic_fit_star_gradient(m_indexed.arrays, s, frame))
+        return *fitted;
+    return internal::star_gradient(m_indexed.arrays, s, frame);
+  }
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
@@ -475,7 +491,7 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   std::optional<internal::Vector3> reference;
   if (query.reference_direction) reference = *query.reference_direction;
   const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
-  const internal::Star_gradient star = internal::star_gradient(m_indexed.arrays, s, frame);
+  const internal::Star_gradient star = source_star_gradient(s, frame);
   const std::size_t component =
       static_cast<std::size_t>(m_indexed.arrays.component_size[m_indexed.arrays.component[s]]);
   const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
@@ -576,7 +592,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     if (v == s) continue;
     // Step 3 of the paper: the direction of the geodesic to v is the
     // gradient at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
-    const bool use_log = m_options.angle_estimator == Angle_estimator::log_heat_gradient &&
+    const bool use_log = m_options.angle_estimator != Angle_estimator::heat_gradient &&
                          std::all_of(h, h + width, [](double x) { return x > 0; });
     for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
     const auto g = star.apply(values.data());
