@@ -46,6 +46,7 @@ struct Compute_arguments {
   std::string method = "heat";
   std::optional<double> time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
+  std::optional<std::string> angles;     // "area-weighted" or "quadratic-fit"
   std::optional<std::array<double, 3>> reference;
   bool triangulate = false;
   std::vector<Output> outputs;
@@ -181,6 +182,12 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
       if (*a.laplacian != "direct" && *a.laplacian != "intrinsic-delaunay")
         throw Usage_error("--laplacian must be 'direct' or 'intrinsic-delaunay' (got '" +
                           *a.laplacian + "')");
+    } else if (name == "--angles") {
+      once(a.angles.has_value());
+      a.angles = take_value();
+      if (*a.angles != "area-weighted" && *a.angles != "quadratic-fit")
+        throw Usage_error("--angles must be 'area-weighted' or 'quadratic-fit' (got '" +
+                          *a.angles + "')");
     } else if (name == "--reference") {
       once(a.reference.has_value());
       a.reference = parse_vector(name, take_value());

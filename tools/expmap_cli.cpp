@@ -84,12 +84,20 @@ Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index so
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
     options.laplacian = expmap::Laplacian_mode::direct;
+  if (a.angles == std::string("quadratic-fit"))
+    options.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
+  else if (a.angles == std::string("area-weighted"))
+    options.angle_estimator = expmap::Angle_estimator::log_heat_gradient;
   Run run = timed_run([&] { return expmap::Heat_exponential_map<Mesh>(mesh, options); }, source,
                       patch, query);
   std::ostringstream d;
   d << "heat method (time factor " << options.time_factor << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "intrinsic Delaunay")
-    << " Laplacian)";
+    << " Laplacian, "
+    << (options.angle_estimator == expmap::Angle_estimator::log_heat_quadratic_fit
+            ? "quadratic-fit"
+            : "area-weighted")
+    << " angles)";
   run.description = d.str();
   return run;
 }
@@ -107,7 +115,7 @@ struct Method {
   const char* name;
   const char* summary;      // for --help
   const char* description;  // for the summary and the SVG caption (heat adds its settings)
-  bool takes_heat_options;  // --time-factor and --laplacian
+  bool takes_heat_options;  // --time-factor, --laplacian and --angles
   Run (*run)(const Mesh&, const Compute_arguments&, Mesh::Vertex_index, const expmap::Patch&,
              const expmap::Query_options&);
 };
@@ -150,7 +158,7 @@ std::string compute_help() {
   std::ostringstream h;
   const expmap::Heat_options defaults;
   h << "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-       "                      [--method M] [--time-factor T] [--laplacian L]\n"
+       "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
        "                      [--reference X,Y,Z] [--triangulate] -o OUT [-o OUT ...]\n"
        "\n"
        "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
@@ -175,6 +183,11 @@ std::string compute_help() {
        "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
+       "  --angles A           heat only: how the angle is read off the heat at the\n"
+       "                       source's one-ring: area-weighted (the paper's gradient,\n"
+       "                       of log h; smoothest maps) | quadratic-fit (least-squares\n"
+       "                       quadratic; more accurate on irregular meshes)\n"
+       "                       (default: area-weighted)\n"
        "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"
@@ -247,8 +260,8 @@ int compute(const std::vector<std::string>& args) {
     return 0;
   }
   const Method& method = find_method(a.method);
-  if (!method.takes_heat_options && (a.time_factor || a.laplacian))
-    throw Usage_error("--time-factor and --laplacian apply only to --method heat");
+  if (!method.takes_heat_options && (a.time_factor || a.laplacian || a.angles))
+    throw Usage_error("--time-factor, --laplacian and --angles apply only to --method heat");
 
   // Fail before the costly part, not after it.
   for (const auto& output : a.outputs) {

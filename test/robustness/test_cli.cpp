@@ -173,6 +173,17 @@ BOOST_AUTO_TEST_CASE(every_method_answers_the_same_patch_size) {
   }
 }
 
+BOOST_AUTO_TEST_CASE(both_angle_estimators_answer) {
+  for (const char* angles : {"area-weighted", "quadratic-fit"}) {
+    BOOST_TEST_CONTEXT("--angles " << angles) {
+      const int status = run("compute " + file("grid.off") + " --source 24 --vertices 10 --angles " +
+                             angles + " -o " + file("map.csv"));
+      BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
+      BOOST_TEST(read_lines(dir / "map.csv").size() == 11u);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(triangulate_makes_polygon_meshes_usable) {
   const int status = run("compute " + file("quads.off") +
                          " --triangulate --source 1 --fraction 1 -o " + file("map.csv"));
@@ -185,7 +196,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--laplacian", "--reference", "--triangulate", "--output"})
+        "--laplacian", "--angles", "--reference", "--triangulate", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
@@ -206,6 +217,8 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
   check_error(grid + " --source 0 --vertices 10 -o " + file("a.txt"), 2);
   check_error(grid + " --source 0 --vertices 10 --no-such-option" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method no-such-method" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --angles sideways" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dem --angles quadratic-fit" + csv, 2);
   check_error(grid + " --source 0 --radius", 2);
   check_error(grid + " --source 0 --vertices 10", 2);
   check_error("", 2);
