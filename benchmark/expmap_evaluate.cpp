@@ -25,6 +25,16 @@
 //
 // CSV columns are described in doc/results.md (section "Files").
 
+#include "evaluation/Common.h"
+#include "evaluation/Figures.h"
+#include "evaluation/Formatting.h"
+#include "evaluation/Geodesic_shooting.h"
+#include "evaluation/Meshes.h"
+#include "evaluation/Methods.h"
+#include "evaluation/Reference_maps.h"
+#include "evaluation/Statistics.h"
+#include "evaluation/Surfaces.h"
+
 #include <expmap/Analytic_surfaces.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Errors.h>
@@ -32,33 +42,22 @@
 #include <expmap/Fold_overs.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
-#include <expmap/IO/write_svg.h>
 
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
-#include <CGAL/convex_hull_3.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
-
-#include <boost/numeric/odeint.hpp>
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <cstdio>
+#include <cstddef>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <map>
 #include <memory>
-#include <numeric>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -67,379 +66,9 @@
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Point = Kernel::Point_3;
-using Mesh = CGAL::Surface_mesh<Point>;
-using Vertex = Mesh::Vertex_index;
-using Map = expmap::Local_map<Vertex>;
-using Vec3 = std::array<double, 3>;
-namespace fs = std::filesystem;
+using namespace expmap_evaluation;
 
-constexpr double pi = 3.14159265358979323846;
-
-// ---------------------------------------------------------------------------
-// Small utilities
-// ---------------------------------------------------------------------------
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-double mean(const std::vector<double>& v) {
-  if (v.empty()) return std::nan("");
-  return std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
-}
-
-/// Mean of the finite values (NaN if there are none).
-double mean_finite(const std::vector<double>& v) {
-  double sum = 0;
-  std::size_t n = 0;
-  for (double x : v)
-    if (std::isfinite(x)) {
-      sum += x;
-      ++n;
-    }
-  return n ? sum / static_cast<double>(n) : std::nan("");
-}
-
-/// Nearest-rank percentile (p in [0, 1]) of a copy of `v`.
-double percentile(std::vector<double> v, double p) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t rank =
-      std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(p * static_cast<double>(v.size()))));
-  return v[std::min(rank, v.size()) - 1];
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return std::nan("");
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-double wrap_angle(double a) {
-  a = std::remainder(a, 2 * pi);
-  return a <= -pi ? a + 2 * pi : a;
-}
-
-/// |theta - theta_exact - rotation| per pair, where `rotation` (returned) is
-/// the circular mean of the differences: the maps may use different
-/// reference directions, and this constant is not an error.
-std::vector<double> angle_errors_up_to_rotation(const std::vector<double>& computed,
-                                                const std::vector<double>& exact,
-                                                double& rotation) {
-  double c = 0, s = 0;
-  for (std::size_t i = 0; i < computed.size(); ++i) {
-    c += std::cos(computed[i] - exact[i]);
-    s += std::sin(computed[i] - exact[i]);
-  }
-  rotation = std::atan2(s, c);
-  std::vector<double> errors;
-  for (std::size_t i = 0; i < computed.size(); ++i)
-    errors.push_back(std::abs(wrap_angle(computed[i] - exact[i] - rotation)));
-  return errors;
-}
-
-/// Portable uniform integer in [0, n) from std::mt19937's raw output.
-std::size_t uniform_below(std::mt19937& rng, std::size_t n) {
-  const std::uint32_t m = static_cast<std::uint32_t>(n);
-  const std::uint32_t threshold = (0u - m) % m;
-  for (;;) {
-    const std::uint32_t x = static_cast<std::uint32_t>(rng());
-    if (x >= threshold) return x % m;
-  }
-}
-
-/// The paper's number format: 0.612e-3 (mantissa in [0.1, 1)).
-std::string paper_style(double x) {
-  if (!std::isfinite(x)) return "n/a";
-  if (x == 0) return "0";
-  const int e = static_cast<int>(std::floor(std::log10(std::abs(x)))) + 1;
-  double m = x / std::pow(10.0, e);
-  char buffer[48];
-  std::snprintf(buffer, sizeof buffer, "%.3f", m);
-  if (std::string(buffer) == "1.000" || std::string(buffer) == "-1.000") {
-    std::snprintf(buffer, sizeof buffer, "%.3fe%d", m / 10, e + 1);
-    return buffer;
-  }
-  std::snprintf(buffer, sizeof buffer, "%.3fe%d", m, e);
-  return buffer;
-}
-
-std::string fixed(double x, int digits) {
-  if (!std::isfinite(x)) return "n/a";
-  std::ostringstream s;
-  s << std::fixed << std::setprecision(digits) << x;
-  return s.str();
-}
-
-std::string general(double x, int digits = 6) {
-  if (!std::isfinite(x)) return "nan";
-  std::ostringstream s;
-  s << std::setprecision(digits) << x;
-  return s.str();
-}
-
-std::string percent(double x, int digits = 1) {
-  if (!std::isfinite(x)) return "n/a";
-  return fixed(100 * x, digits) + "%";
-}
-
-void write_text(const fs::path& path, const std::string& text) {
-  fs::create_directories(path.parent_path());
-  std::ofstream out(path);
-  if (!(out << text)) throw std::runtime_error("cannot write " + path.string());
-  std::cout << "wrote " << path.string() << "\n";
-}
-
-Mesh to_mesh(const expmap::Triangle_soup& soup) {
-  Mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
-  return mesh;
-}
-
-/// The soup of a Surface_mesh (vertex and face order kept).
-expmap::Triangle_soup to_soup(const Mesh& mesh) {
-  expmap::Triangle_soup soup;
-  for (auto v : vertices(mesh)) {
-    const Point& p = mesh.point(v);
-    soup.points.push_back({{p.x(), p.y(), p.z()}});
-  }
-  for (auto f : faces(mesh)) {
-    std::array<int, 3> t{};
-    int c = 0;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) t[c++] = int(std::size_t(v));
-    soup.triangles.push_back(t);
-  }
-  return soup;
-}
-
-double mean_edge_length(const expmap::Triangle_soup& soup) {
-  // Over triangle sides: each interior edge counts twice, boundary edges
-  // once, as in the library's h (Mesh_arrays) up to that weighting.
-  double sum = 0;
-  std::size_t count = 0;
-  for (const auto& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const auto& a = soup.points[std::size_t(t[k])];
-      const auto& b = soup.points[std::size_t(t[(k + 1) % 3])];
-      sum += std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
-                       (a[2] - b[2]) * (a[2] - b[2]));
-      ++count;
-    }
-  return sum / static_cast<double>(count);
-}
-
-double mean_edge_length(const Mesh& mesh) {
-  double sum = 0;
-  std::size_t count = 0;
-  for (auto e : mesh.edges()) {
-    sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)),
-                                            mesh.point(mesh.vertex(e, 1))));
-    ++count;
-  }
-  return sum / static_cast<double>(count);
-}
-
-/// Fraction of the interior edges of a soup whose two opposite angles sum
-/// to more than pi (by more than 1e-9): the edges that make the cotan
-/// Laplacian lose its positive weights.
-double non_delaunay_fraction(const expmap::Triangle_soup& soup) {
-  std::map<std::pair<int, int>, double> opposite;  // edge -> sum of opposite angles
-  std::map<std::pair<int, int>, int> count;
-  for (const auto& t : soup.triangles)
-    for (int k = 0; k < 3; ++k) {
-      const int a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
-      const auto& pa = soup.points[std::size_t(a)];
-      const auto& pb = soup.points[std::size_t(b)];
-      const auto& pc = soup.points[std::size_t(c)];
-      const Vec3 u{{pa[0] - pc[0], pa[1] - pc[1], pa[2] - pc[2]}};
-      const Vec3 v{{pb[0] - pc[0], pb[1] - pc[1], pb[2] - pc[2]}};
-      const double cosine = (u[0] * v[0] + u[1] * v[1] + u[2] * v[2]) /
-                            std::sqrt((u[0] * u[0] + u[1] * u[1] + u[2] * u[2]) *
-                                      (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      opposite[key] += std::acos(std::clamp(cosine, -1.0, 1.0));
-      ++count[key];
-    }
-  std::size_t interior = 0, bad = 0;
-  for (const auto& [key, sum] : opposite)
-    if (count[key] == 2) {
-      ++interior;
-      bad += sum > pi + 1e-9;
-    }
-  return interior ? double(bad) / double(interior) : 0.0;
-}
-
-// ---------------------------------------------------------------------------
-// Methods behind one interface
-// ---------------------------------------------------------------------------
-
-struct Method {
-  std::string key;    // for CSVs: heat_m10, dem, ...
-  std::string label;  // for tables and pictures
-  double precompute_seconds = 0;
-  std::function<Map(std::size_t, const expmap::Patch&)> compute;
-};
-
-class Method_set {
- public:
-  explicit Method_set(const Mesh& mesh) : m_mesh(mesh) {}
-
-  void add_heat(const std::string& key, const std::string& label, double time_factor,
-                expmap::Laplacian_mode mode = expmap::Laplacian_mode::direct) {
-    expmap::Heat_options options;
-    options.time_factor = time_factor;
-    options.laplacian = mode;
-    const auto start = std::chrono::steady_clock::now();
-    auto heat = std::make_shared<expmap::Heat_exponential_map<Mesh>>(m_mesh, options);
-    push(key, label, seconds_since(start),
-         [heat](std::size_t s, const expmap::Patch& p) { return heat->compute_by_index(s, p); },
-         heat);
-  }
-
-  template <template <class> class M>
-  void add(const std::string& key, const std::string& label) {
-    const auto start = std::chrono::steady_clock::now();
-    auto method = std::make_shared<M<Mesh>>(m_mesh);
-    push(key, label, seconds_since(start),
-         [method](std::size_t s, const expmap::Patch& p) { return method->compute_by_index(s, p); },
-         method);
-  }
-
-  std::vector<Method> methods;
-
- private:
-  void push(const std::string& key, const std::string& label, double seconds,
-            std::function<Map(std::size_t, const expmap::Patch&)> f, std::shared_ptr<void> owner) {
-    Method m;
-    m.key = key;
-    m.label = label;
-    m.precompute_seconds = seconds;
-    m.compute = std::move(f);
-    methods.push_back(std::move(m));
-    m_owners.push_back(std::move(owner));
-  }
-  const Mesh& m_mesh;
-  std::vector<std::shared_ptr<void>> m_owners;
-};
-
-/// Position of each mesh vertex in `map` (-1 outside the patch).
-std::vector<int> positions(const Map& map, std::size_t n) {
-  std::vector<int> pos(n, -1);
-  for (std::size_t i = 0; i < map.size(); ++i) pos[map.indices[i]] = static_cast<int>(i);
-  return pos;
-}
-
-// ---------------------------------------------------------------------------
-// Reference points and error measures
-// ---------------------------------------------------------------------------
-
-/// A point where the exact map is known: a vertex, or a point inside a
-/// triangle given by barycentric weights.
-struct Reference_point {
-  int vertex = -1;                  // >= 0: a mesh vertex
-  std::array<int, 3> corner{};      // otherwise: the triangle's vertices
-  std::array<double, 3> weight{};   // and the barycentric weights
-  double r = 0, theta = 0;          // exact polar coordinates (theta unrotated)
-};
-
-/// The computed map at a reference point: at a vertex its values; inside a
-/// triangle the barycentric interpolation of r and of (u, v), the angle
-/// being that of the interpolated (u, v) (no wrap-around problem, and
-/// correct in the triangles around the source, whose angle is undefined).
-bool evaluate(const Map& map, const std::vector<int>& pos, const Reference_point& p, double& r,
-              double& theta) {
-  if (p.vertex >= 0) {
-    const int i = pos[std::size_t(p.vertex)];
-    if (i < 0) return false;
-    r = map.distance[std::size_t(i)];
-    theta = map.angle[std::size_t(i)];
-    return true;
-  }
-  r = 0;
-  double u = 0, v = 0;
-  for (int k = 0; k < 3; ++k) {
-    const int i = pos[std::size_t(p.corner[k])];
-    if (i < 0) return false;
-    const auto uv = map.uv(std::size_t(i));
-    r += p.weight[k] * map.distance[std::size_t(i)];
-    u += p.weight[k] * uv[0];
-    v += p.weight[k] * uv[1];
-  }
-  theta = std::atan2(v, u);
-  return true;
-}
-
-struct Errors {
-  double distance = std::nan("");  // mean |r - r_exact|
-  double angle = std::nan("");     // mean |theta - theta_exact - rotation|
-  double distance_max = std::nan("");
-  double angle_max = std::nan("");
-  double rotation = 0;             // the constant rotation removed
-  std::size_t points = 0, missing = 0;
-  // The same over the points with r_exact <= inner_radius (the inner half of
-  // the patch in the accuracy study), same rotation.
-  double distance_inner = std::nan(""), angle_inner = std::nan("");
-};
-
-/// Errors of `map` at the reference points; the constant rotation between
-/// computed and exact angles (their circular mean difference) is removed,
-/// as the maps may use different reference directions.
-Errors map_errors(const Map& map, std::size_t n, const std::vector<Reference_point>& points,
-                  double inner_radius = 0) {
-  const std::vector<int> pos = positions(map, n);
-  std::vector<double> dr, computed, exact, radius;
-  Errors e;
-  for (const auto& p : points) {
-    double r, theta;
-    if (!evaluate(map, pos, p, r, theta)) {
-      ++e.missing;
-      continue;
-    }
-    dr.push_back(std::abs(r - p.r));
-    computed.push_back(theta);
-    exact.push_back(p.theta);
-    radius.push_back(p.r);
-  }
-  e.points = dr.size();
-  if (dr.empty()) return e;
-  const std::vector<double> da = angle_errors_up_to_rotation(computed, exact, e.rotation);
-  e.distance = mean(dr);
-  e.angle = mean(da);
-  e.distance_max = *std::max_element(dr.begin(), dr.end());
-  e.angle_max = *std::max_element(da.begin(), da.end());
-  std::vector<double> dr_inner, da_inner;
-  for (std::size_t i = 0; i < dr.size(); ++i)
-    if (radius[i] <= inner_radius) {
-      dr_inner.push_back(dr[i]);
-      da_inner.push_back(da[i]);
-    }
-  e.distance_inner = mean(dr_inner);
-  e.angle_inner = mean(da_inner);
-  return e;
-}
-
-/// Distance error of a whole-mesh distance field (CGAL's heat method).
-Errors field_errors(const std::vector<double>& field, const std::vector<Reference_point>& points) {
-  std::vector<double> dr;
-  for (const auto& p : points) {
-    double r = 0;
-    if (p.vertex >= 0) {
-      r = field[std::size_t(p.vertex)];
-    } else {
-      for (int k = 0; k < 3; ++k) r += p.weight[k] * field[std::size_t(p.corner[k])];
-    }
-    dr.push_back(std::abs(r - p.r));
-  }
-  Errors e;
-  e.points = dr.size();
-  e.distance = mean(dr);
-  e.distance_max = dr.empty() ? std::nan("") : *std::max_element(dr.begin(), dr.end());
-  return e;
-}
-
+/// Distances from `source` to every vertex by CGAL's Heat_method_3.
 std::vector<double> cgal_heat_distances(Mesh& mesh, std::size_t source) {
   auto d = mesh.add_property_map<Vertex, double>("v:evaluate_cgal_distance", 0.0).first;
   {
@@ -451,336 +80,6 @@ std::vector<double> cgal_heat_distances(Mesh& mesh, std::size_t source) {
   for (auto v : vertices(mesh)) field[std::size_t(v)] = get(d, v);
   mesh.remove_property_map(d);
   return field;
-}
-
-// ---------------------------------------------------------------------------
-// Surfaces of Table 1
-// ---------------------------------------------------------------------------
-
-/// Geodesic (class I) sphere of frequency k: every face of the icosahedron
-/// split into k^2 triangles on a barycentric lattice, points projected onto
-/// the unit sphere. 10 k^2 + 2 vertices; unlike the icosphere (k = 2^s) any
-/// resolution can be hit.
-expmap::Triangle_soup geodesic_sphere(int k) {
-  const expmap::Triangle_soup ico = expmap::make_icosphere(0, 1.0);
-  expmap::Triangle_soup soup;
-  // Key: the icosahedron vertices with non-zero lattice weight, sorted.
-  std::map<std::array<int, 6>, int> index;
-  auto vertex = [&](const std::array<int, 3>& corners, const std::array<int, 3>& weights) {
-    std::array<std::pair<int, int>, 3> entries{};
-    int m = 0;
-    for (int c = 0; c < 3; ++c)
-      if (weights[c] > 0) entries[m++] = {corners[c], weights[c]};
-    for (int a = 1; a < m; ++a)  // insertion sort of at most three entries
-      for (int b = a; b > 0 && entries[b] < entries[b - 1]; --b) std::swap(entries[b], entries[b - 1]);
-    std::array<int, 6> key;
-    key.fill(-1);
-    for (int c = 0; c < m; ++c) {
-      key[2 * c] = entries[c].first;
-      key[2 * c + 1] = entries[c].second;
-    }
-    const auto found = index.find(key);
-    if (found != index.end()) return found->second;
-    Vec3 p{0, 0, 0};
-    for (int c = 0; c < 3; ++c)
-      for (int d = 0; d < 3; ++d) p[d] += weights[c] * ico.points[std::size_t(corners[c])][d];
-    const double norm = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    for (double& x : p) x /= norm;
-    const int i = static_cast<int>(soup.points.size());
-    soup.points.push_back(p);
-    index.emplace(key, i);
-    return i;
-  };
-  for (const auto& f : ico.triangles) {
-    auto at = [&](int i, int j) { return vertex(f, {{k - i - j, i, j}}); };
-    for (int j = 0; j < k; ++j)
-      for (int i = 0; i + j < k; ++i) {
-        soup.triangles.push_back({{at(i, j), at(i + 1, j), at(i, j + 1)}});
-        if (i + j + 2 <= k) soup.triangles.push_back({{at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}});
-      }
-  }
-  return soup;
-}
-
-/// Irregular Delaunay version of `geodesic_sphere(k)`: every vertex moved
-/// in its tangent plane by a uniformly random vector of length up to
-/// `jitter` times the lattice spacing, projected back onto the sphere, and
-/// triangulated as the convex hull of the points (the spherical Delaunay
-/// triangulation). Seeded std::mt19937, so deterministic.
-expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed) {
-  const expmap::Triangle_soup lattice = geodesic_sphere(k);
-  const double spacing = mean_edge_length(lattice);
-  std::mt19937 rng(seed);
-  auto uniform = [&rng]() { return double(rng()) / 4294967296.0; };
-  std::vector<Point> points;
-  for (const auto& p : lattice.points) {
-    // Tangent basis at p.
-    const Vec3 a = std::abs(p[2]) < 0.9 ? Vec3{{0, 0, 1}} : Vec3{{1, 0, 0}};
-    Vec3 u{{a[1] * p[2] - a[2] * p[1], a[2] * p[0] - a[0] * p[2], a[0] * p[1] - a[1] * p[0]}};
-    const double nu = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (double& x : u) x /= nu;
-    const Vec3 v{{p[1] * u[2] - p[2] * u[1], p[2] * u[0] - p[0] * u[2], p[0] * u[1] - p[1] * u[0]}};
-    const double angle = 2 * pi * uniform(), length = jitter * spacing * std::sqrt(uniform());
-    Vec3 q;
-    for (int d = 0; d < 3; ++d) q[d] = p[d] + length * (std::cos(angle) * u[d] + std::sin(angle) * v[d]);
-    const double nq = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-    points.emplace_back(q[0] / nq, q[1] / nq, q[2] / nq);
-  }
-  Mesh hull;
-  CGAL::convex_hull_3(points.begin(), points.end(), hull);
-  return to_soup(hull);
-}
-
-/// Irregular Delaunay height field: the points of a hexagonal lattice of
-/// spacing `edge` covering the disk of radius `extent`, each interior point
-/// (not the origin, not the outer ring) moved by a uniformly random vector
-/// of length up to `jitter * edge`, Delaunay-triangulated in the plane and
-/// lifted by `height`. Vertex 0 is the origin.
-template <class Height>
-expmap::Triangle_soup jittered_height_field(double edge, double extent, double jitter, unsigned seed,
-                                            Height height) {
-  const int rings = static_cast<int>(std::ceil(extent / (edge * std::sqrt(3.0) / 2)));
-  const expmap::Triangle_soup lattice = expmap::make_equilateral_grid(rings, edge);
-  const std::size_t outer_ring_start = std::size_t(1 + 3 * rings * (rings - 1));
-  std::mt19937 rng(seed);
-  auto uniform = [&rng]() { return double(rng()) / 4294967296.0; };
-  using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
-  using Tds = CGAL::Triangulation_data_structure_2<Vb>;
-  using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
-  Delaunay dt;
-  expmap::Triangle_soup soup;
-  for (std::size_t i = 0; i < lattice.points.size(); ++i) {
-    double x = lattice.points[i][0], y = lattice.points[i][1];
-    if (i > 0 && i < outer_ring_start) {
-      const double angle = 2 * pi * uniform(), length = jitter * edge * std::sqrt(uniform());
-      x += length * std::cos(angle);
-      y += length * std::sin(angle);
-    }
-    soup.points.push_back({{x, y, height(x, y)}});
-    dt.insert(Kernel::Point_2(x, y))->info() = int(i);
-  }
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
-    soup.triangles.push_back({{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}});
-  return soup;
-}
-
-/// The smallest/largest parameter of a mesh family whose mean edge length
-/// is closest to `target` (h decreasing in the parameter).
-template <class Make>
-int closest_resolution(double target, int first, int step, Make make) {
-  int best = first;
-  double best_gap = std::numeric_limits<double>::infinity();
-  for (int k = first;; k += step) {
-    const double h = mean_edge_length(make(k));
-    const double gap = std::abs(std::log(h / target));
-    if (gap < best_gap) {
-      best_gap = gap;
-      best = k;
-    }
-    if (h < target) break;
-  }
-  return best;
-}
-
-/// A height field z = f(x, y) with its derivatives.
-struct Height_field {
-  // f, f_x, f_y, f_xx, f_xy, f_yy
-  std::function<std::array<double, 6>(double, double)> eval;
-};
-
-Height_field gaussian_bump_field(double amplitude, double sigma) {
-  return {[=](double x, double y) {
-    const double s2 = sigma * sigma;
-    const double f = amplitude * std::exp(-(x * x + y * y) / (2 * s2));
-    return std::array<double, 6>{{f, -x / s2 * f, -y / s2 * f, (x * x / s2 - 1) / s2 * f,
-                                  x * y / (s2 * s2) * f, (y * y / s2 - 1) / s2 * f}};
-  }};
-}
-
-Height_field saddle_field(double amplitude) {
-  return {[=](double x, double y) {
-    const double sx = std::sin(x), cx = std::cos(x), sy = std::sin(y), cy = std::cos(y);
-    return std::array<double, 6>{{amplitude * sx * sy, amplitude * cx * sy, amplitude * sx * cy,
-                                  -amplitude * sx * sy, amplitude * cx * cy, -amplitude * sx * sy}};
-  }};
-}
-
-/// One sample of a geodesic from the origin of a height field.
-struct Geodesic_sample {
-  double x, y, s, theta;
-};
-
-struct Ode_report {
-  double speed_residual = 0;   // max |g(x', x') - 1| over the samples
-  double tolerance_change = 0; // max position change between tolerances 1e-10 and 1e-13
-};
-
-/// Geodesics from the origin of z = f(x, y) (a critical point: grad f = 0,
-/// so the tangent plane is z = 0 and the initial direction at angle theta
-/// is (cos theta, sin theta), of unit speed). The geodesic equation in the
-/// parameter domain, with the metric g = I + grad f grad f^T, whose
-/// Christoffel symbols are Gamma^k_ij = f_k f_ij / (1 + |grad f|^2):
-///
-///     x''^k = -f_k (x'^T Hess f x') / (1 + |grad f|^2),
-///
-/// integrated by Dormand-Prince 5(4) with dense output (Boost.Odeint) in the
-/// arc-length parameter; samples at s = radius j / per_geodesic.
-std::vector<Geodesic_sample> shoot_geodesics(const Height_field& field, int directions,
-                                             int per_geodesic, double radius, Ode_report& report) {
-  namespace odeint = boost::numeric::odeint;
-  using State = std::array<double, 4>;
-  auto rhs = [&](const State& q, State& dq, double) {
-    const auto d = field.eval(q[0], q[1]);
-    const double w = 1 + d[1] * d[1] + d[2] * d[2];
-    const double hess = d[3] * q[2] * q[2] + 2 * d[4] * q[2] * q[3] + d[5] * q[3] * q[3];
-    dq[0] = q[2];
-    dq[1] = q[3];
-    dq[2] = -d[1] * hess / w;
-    dq[3] = -d[2] * hess / w;
-  };
-  std::vector<double> times;
-  for (int j = 0; j <= per_geodesic; ++j) times.push_back(radius * j / per_geodesic);
-  auto integrate = [&](double theta, double tolerance) {
-    std::vector<State> states;
-    State q{{0, 0, std::cos(theta), std::sin(theta)}};
-    auto stepper = odeint::make_dense_output(tolerance, tolerance, odeint::runge_kutta_dopri5<State>());
-    odeint::integrate_times(stepper, rhs, q, times.begin(), times.end(), 1e-3 * radius,
-                            [&](const State& x, double) { states.push_back(x); });
-    return states;
-  };
-  std::vector<Geodesic_sample> samples;
-  for (int k = 0; k < directions; ++k) {
-    // Offset by a quarter step so no geodesic runs exactly along a grid line.
-    const double theta = wrap_angle(2 * pi * (k + 0.25) / directions);
-    const auto fine = integrate(theta, 1e-13);
-    const auto coarse = integrate(theta, 1e-10);
-    for (int j = 1; j <= per_geodesic; ++j) {
-      const State& q = fine[std::size_t(j)];
-      const auto d = field.eval(q[0], q[1]);
-      const double slope = d[1] * q[2] + d[2] * q[3];
-      report.speed_residual =
-          std::max(report.speed_residual, std::abs(q[2] * q[2] + q[3] * q[3] + slope * slope - 1));
-      report.tolerance_change =
-          std::max(report.tolerance_change, std::hypot(q[0] - coarse[std::size_t(j)][0],
-                                                       q[1] - coarse[std::size_t(j)][1]));
-      samples.push_back({q[0], q[1], times[std::size_t(j)], theta});
-    }
-  }
-  return samples;
-}
-
-/// Point location in the xy projection of a height-field (or planar) mesh.
-class Xy_locator {
- public:
-  explicit Xy_locator(const expmap::Triangle_soup& soup) : m_soup(soup) {
-    double x1 = -1e300, y1 = -1e300;
-    m_x0 = m_y0 = 1e300;
-    for (const auto& p : soup.points) {
-      m_x0 = std::min(m_x0, p[0]);
-      m_y0 = std::min(m_y0, p[1]);
-      x1 = std::max(x1, p[0]);
-      y1 = std::max(y1, p[1]);
-    }
-    const double cells = std::max(1.0, std::sqrt(static_cast<double>(soup.triangles.size()) / 2));
-    m_cell = std::max(x1 - m_x0, y1 - m_y0) / cells * 1.0001;
-    m_nx = static_cast<int>((x1 - m_x0) / m_cell) + 1;
-    m_ny = static_cast<int>((y1 - m_y0) / m_cell) + 1;
-    m_buckets.resize(std::size_t(m_nx) * std::size_t(m_ny));
-    for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-      double a = 1e300, b = 1e300, c = -1e300, d = -1e300;
-      for (int v : soup.triangles[t]) {
-        a = std::min(a, soup.points[std::size_t(v)][0]);
-        b = std::min(b, soup.points[std::size_t(v)][1]);
-        c = std::max(c, soup.points[std::size_t(v)][0]);
-        d = std::max(d, soup.points[std::size_t(v)][1]);
-      }
-      for (int j = cell_y(b); j <= cell_y(d); ++j)
-        for (int i = cell_x(a); i <= cell_x(c); ++i)
-          m_buckets[std::size_t(j) * std::size_t(m_nx) + std::size_t(i)].push_back(int(t));
-    }
-  }
-
-  /// The triangle containing (x, y) and the barycentric weights (the
-  /// triangle with the largest smallest weight among those containing it).
-  bool locate(double x, double y, Reference_point& p) const {
-    const int i = cell_x(x), j = cell_y(y);
-    double best = -1e-9;
-    bool found = false;
-    for (int t : m_buckets[std::size_t(j) * std::size_t(m_nx) + std::size_t(i)]) {
-      const auto& tri = m_soup.triangles[std::size_t(t)];
-      const auto& a = m_soup.points[std::size_t(tri[0])];
-      const auto& b = m_soup.points[std::size_t(tri[1])];
-      const auto& c = m_soup.points[std::size_t(tri[2])];
-      const double det = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-      const double wb = ((x - a[0]) * (c[1] - a[1]) - (y - a[1]) * (c[0] - a[0])) / det;
-      const double wc = ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0])) / det;
-      const double wa = 1 - wb - wc;
-      const double least = std::min({wa, wb, wc});
-      if (least > best) {
-        best = least;
-        found = true;
-        p.vertex = -1;
-        p.corner = tri;
-        p.weight = {{wa, wb, wc}};
-      }
-    }
-    return found;
-  }
-
- private:
-  int cell_x(double x) const {
-    return std::clamp(static_cast<int>((x - m_x0) / m_cell), 0, m_nx - 1);
-  }
-  int cell_y(double y) const {
-    return std::clamp(static_cast<int>((y - m_y0) / m_cell), 0, m_ny - 1);
-  }
-  const expmap::Triangle_soup& m_soup;
-  double m_x0, m_y0, m_cell;
-  int m_nx, m_ny;
-  std::vector<std::vector<int>> m_buckets;
-};
-
-// ---------------------------------------------------------------------------
-// Pictures: several write_svg() panels side by side in one SVG
-// ---------------------------------------------------------------------------
-
-struct Panel {
-  const Mesh* mesh;
-  Map map;
-  std::string caption;
-};
-
-void write_figure(const fs::path& path, const std::vector<Panel>& panels, double size = 400,
-                  std::size_t columns = 0) {
-  if (columns == 0) columns = panels.size();
-  const std::size_t rows = (panels.size() + columns - 1) / columns;
-  fs::create_directories(path.parent_path());
-  std::ostringstream body;
-  std::vector<std::string> panel_svgs;
-  double height = 0;
-  for (std::size_t k = 0; k < panels.size(); ++k) {
-    expmap::IO::Svg_options options;
-    options.method = panels[k].caption;
-    options.size = size;
-    std::ostringstream one;
-    expmap::IO::write_svg(one, *panels[k].mesh, panels[k].map, options);
-    std::string svg = one.str();
-    if (svg.rfind("<?xml", 0) == 0) svg = svg.substr(svg.find('\n') + 1);
-    // The panel's own height (caption strip included).
-    const auto h_at = svg.find("height=\"");
-    if (h_at != std::string::npos) height = std::max(height, std::stod(svg.substr(h_at + 8)));
-    panel_svgs.push_back(svg);
-  }
-  for (std::size_t k = 0; k < panel_svgs.size(); ++k)
-    body << "<g transform=\"translate(" << (k % columns) * size << ',' << (k / columns) * height
-         << ")\">\n" << panel_svgs[k] << "</g>\n";
-  std::ofstream out(path);
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-      << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << size * columns
-      << "\" height=\"" << height * rows << "\" viewBox=\"0 0 " << size * columns << ' ' << height * rows
-      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fcfcfa\"/>\n"
-      << body.str() << "</svg>\n";
-  std::cout << "wrote " << path.string() << "\n";
 }
 
 // ---------------------------------------------------------------------------
@@ -1921,13 +1220,13 @@ void run_folds(const Settings& settings) {
           << general(double(st.patches_with_flips) / double(std::max<std::size_t>(1, st.patches)))
           << ',' << st.triangles << ',' << st.flipped << ','
           << general(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles))) << ','
-          << general(median(st.angle_distortion)) << ',' << general(percentile(st.angle_distortion, 0.95))
+          << general(median(st.angle_distortion)) << ',' << general(percentile(st.angle_distortion, 95))
           << ',' << general(median(st.area_distortion)) << ','
-          << general(percentile(st.area_distortion, 0.95)) << ',' << general(mean_finite(st.distance_error))
+          << general(percentile(st.area_distortion, 95)) << ',' << general(mean_finite(st.distance_error))
           << ',' << general(mean_finite(st.angle_error)) << ','
           << general(st.seconds / double(std::max<std::size_t>(1, r.sources.size())), 4) << ','
           << st.inverted << ',' << st.patches_with_inversions << ',' << st.broken << ','
-          << general(median(st.flip_position)) << ',' << general(percentile(st.flip_position, 0.1)) << '\n';
+          << general(median(st.flip_position)) << ',' << general(percentile(st.flip_position, 10)) << '\n';
     }
   }
   write_text(settings.out / "evaluation" / "folds.csv", csv.str());
@@ -2038,7 +1337,7 @@ void run_folds(const Settings& settings) {
       md << "| " << r.name << " |";
       for (const auto& m : main_methods) {
         const auto& v = angle ? r.stats.at(m.first).angle_distortion : r.stats.at(m.first).area_distortion;
-        md << ' ' << fixed(median(v), 3) << " / " << fixed(percentile(v, 0.95), 3) << " |";
+        md << ' ' << fixed(median(v), 3) << " / " << fixed(percentile(v, 95), 3) << " |";
       }
       md << "\n";
     }
@@ -2057,7 +1356,7 @@ void run_folds(const Settings& settings) {
     md << "| " << r.name << " |";
     for (const auto& m : main_methods) {
       const auto& v = r.stats.at(m.first).flip_position;
-      md << ' ' << (v.empty() ? std::string("-") : fixed(median(v), 2) + " / " + fixed(percentile(v, 0.1), 2)) << " |";
+      md << ' ' << (v.empty() ? std::string("-") : fixed(median(v), 2) + " / " + fixed(percentile(v, 10), 2)) << " |";
     }
     md << "\n";
   }
@@ -2099,7 +1398,7 @@ void run_folds(const Settings& settings) {
       md << "| " << r.name << " | " << general(m) << " | " << flips_cell(st) << " | "
          << st.patches_with_inversions << "/" << st.patches << " | "
          << percent(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles)), 3) << " | "
-         << fixed(median(st.angle_distortion), 3) << " / " << fixed(percentile(st.angle_distortion, 0.95), 3)
+         << fixed(median(st.angle_distortion), 3) << " / " << fixed(percentile(st.angle_distortion, 95), 3)
          << " | " << fixed(mean_finite(st.distance_error), 3) << " | " << paper_style(mean_finite(st.angle_error))
          << " |\n";
     }
