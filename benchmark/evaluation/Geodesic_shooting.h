@@ -9,6 +9,7 @@
 /// reference of the accuracy study where no closed form exists.
 
 #include "Common.h"
+#include "Reference_maps.h"
 #include "Statistics.h"
 
 #include <boost/numeric/odeint.hpp>
@@ -107,6 +108,21 @@ inline std::vector<Geodesic_sample> shoot_geodesics(const Height_field& field, i
     }
   }
   return samples;
+}
+
+/// The samples of shot geodesics as reference points, located on a
+/// height-field mesh by their (x, y); samples off the mesh are left out.
+inline std::vector<Reference_point> sample_references(const Xy_locator& locator,
+                                                      const std::vector<Geodesic_sample>& samples) {
+  std::vector<Reference_point> ref;
+  for (const auto& g : samples) {
+    Reference_point p;
+    if (!locator.locate(g.x, g.y, p)) continue;
+    p.r = g.s;
+    p.theta = g.theta;
+    ref.push_back(p);
+  }
+  return ref;
 }
 
 }  // namespace expmap_evaluation

@@ -114,6 +114,43 @@ inline Errors map_errors(const Map& map, std::size_t n, const std::vector<Refere
   return e;
 }
 
+/// Errors of one method over several sources: the mean of the per-source
+/// means, the largest of the per-source maxima (NaN without sources), and
+/// the total number of points and of points outside the patch.
+class Error_average {
+ public:
+  void add(const Errors& e) {
+    m_distance.push_back(e.distance);
+    m_angle.push_back(e.angle);
+    m_distance_max.push_back(e.distance_max);
+    m_angle_max.push_back(e.angle_max);
+    m_distance_inner.push_back(e.distance_inner);
+    m_angle_inner.push_back(e.angle_inner);
+    m_points += e.points;
+    m_missing += e.missing;
+  }
+
+  Errors result() const {
+    Errors e;
+    e.distance = mean(m_distance);
+    e.angle = mean(m_angle);
+    e.distance_max = largest(m_distance_max);
+    e.angle_max = largest(m_angle_max);
+    e.points = m_points;
+    e.missing = m_missing;
+    e.distance_inner = mean(m_distance_inner);
+    e.angle_inner = mean(m_angle_inner);
+    return e;
+  }
+
+ private:
+  static double largest(const std::vector<double>& v) {
+    return v.empty() ? std::nan("") : *std::max_element(v.begin(), v.end());
+  }
+  std::vector<double> m_distance, m_angle, m_distance_max, m_angle_max, m_distance_inner, m_angle_inner;
+  std::size_t m_points = 0, m_missing = 0;
+};
+
 /// Distance error of a whole-mesh distance field (CGAL's heat method).
 inline Errors field_errors(const std::vector<double>& field, const std::vector<Reference_point>& points) {
   std::vector<double> dr;
@@ -131,6 +168,26 @@ inline Errors field_errors(const std::vector<double>& field, const std::vector<R
   e.distance = mean(dr);
   e.distance_max = dr.empty() ? std::nan("") : *std::max_element(dr.begin(), dr.end());
   return e;
+}
+
+/// The vertices of `soup` within geodesic distance `radius` of `source`
+/// (not the source itself) as reference points, with the polar coordinates
+/// `exact(point)` (an expmap::Polar) of an analytic map.
+template <class Exact>
+std::vector<Reference_point> vertex_references(const expmap::Triangle_soup& soup, std::size_t source,
+                                               double radius, Exact exact) {
+  std::vector<Reference_point> ref;
+  for (std::size_t v = 0; v < soup.points.size(); ++v) {
+    if (v == source) continue;
+    const auto polar = exact(soup.points[v]);
+    if (polar.r > radius) continue;
+    Reference_point p;
+    p.vertex = int(v);
+    p.r = polar.r;
+    p.theta = polar.theta_unrotated;
+    ref.push_back(p);
+  }
+  return ref;
 }
 
 /// Point location in the xy projection of a height-field (or planar) mesh.

@@ -192,21 +192,12 @@ void run_accuracy(const Settings& settings) {
         std::mt19937 rng(1);
         for (int i = 0; i < sphere_sources; ++i) sources.push_back(uniform_below(rng, nv));
         for (std::size_t s : sources) {
-          std::vector<Reference_point> ref;
           // Any tangent reference direction: the rotation is removed anyway.
           const Vec3& n = soup.points[s];
           const Vec3 e1 = std::abs(n[2]) < 0.9 ? Vec3{{-n[1], n[0], 0.0}} : Vec3{{1.0, 0.0, 0.0}};
-          for (std::size_t v = 0; v < nv; ++v) {
-            if (v == s) continue;
-            const auto polar = expmap::sphere_exponential_map(soup.points[s], soup.points[v], 1.0, e1);
-            if (polar.r > radius) continue;
-            Reference_point p;
-            p.vertex = int(v);
-            p.r = polar.r;
-            p.theta = polar.theta_unrotated;
-            ref.push_back(p);
-          }
-          references.push_back(std::move(ref));
+          references.push_back(vertex_references(soup, s, radius, [&](const Vec3& q) {
+            return expmap::sphere_exponential_map(soup.points[s], q, 1.0, e1);
+          }));
         }
       } else {
         const std::size_t s = origin;
@@ -214,32 +205,12 @@ void run_accuracy(const Settings& settings) {
         std::vector<Reference_point> ref;
         const Xy_locator locator(soup);
         if (is_gauss) {
-          for (std::size_t v = 0; v < nv; ++v) {
-            if (v == s) continue;
-            const auto polar =
-                expmap::gaussian_bump_exponential_map(soup.points[v], bump_amplitude, bump_sigma, {{1, 0, 0}});
-            if (polar.r > radius) continue;
-            Reference_point p;
-            p.vertex = int(v);
-            p.r = polar.r;
-            p.theta = polar.theta_unrotated;
-            ref.push_back(p);
-          }
-          for (const auto& g : bump_samples) {
-            Reference_point p;
-            if (!locator.locate(g.x, g.y, p)) continue;
-            p.r = g.s;
-            p.theta = g.theta;
-            bump_ode_points.push_back(p);
-          }
+          ref = vertex_references(soup, s, radius, [&](const Vec3& q) {
+            return expmap::gaussian_bump_exponential_map(q, bump_amplitude, bump_sigma, {{1, 0, 0}});
+          });
+          bump_ode_points = sample_references(locator, bump_samples);
         } else {
-          for (const auto& g : saddle_samples) {
-            Reference_point p;
-            if (!locator.locate(g.x, g.y, p)) continue;
-            p.r = g.s;
-            p.theta = g.theta;
-            ref.push_back(p);
-          }
+          ref = sample_references(locator, saddle_samples);
         }
         references.push_back(std::move(ref));
       }
@@ -262,36 +233,21 @@ void run_accuracy(const Settings& settings) {
       for (const Method& method : set.methods) {
         Accuracy_row row{surface, column, method.key, method.label, reference_kind, target, h, nv,
                          sources.size(), {}, method.precompute_seconds, non_delaunay};
-        std::vector<double> ed, ea, edm, eam, edi, eai;
-        std::size_t points = 0, missing = 0;
+        Error_average average;
         Errors ode_errors;
         for (std::size_t i = 0; i < sources.size(); ++i) {
           const auto start = std::chrono::steady_clock::now();
           const Map map = method.compute(sources[i], patch);
           row.seconds += seconds_since(start);
-          const Errors e = map_errors(map, nv, references[i], 0.5 * radius);
-          ed.push_back(e.distance);
-          ea.push_back(e.angle);
-          edm.push_back(e.distance_max);
-          eam.push_back(e.angle_max);
-          edi.push_back(e.distance_inner);
-          eai.push_back(e.angle_inner);
-          points += e.points;
-          missing += e.missing;
+          average.add(map_errors(map, nv, references[i], 0.5 * radius));
           if (is_gauss) ode_errors = map_errors(map, nv, bump_ode_points, 0.5 * radius);
         }
-        row.errors.distance = mean(ed);
-        row.errors.angle = mean(ea);
-        row.errors.distance_max = *std::max_element(edm.begin(), edm.end());
-        row.errors.angle_max = *std::max_element(eam.begin(), eam.end());
-        row.errors.points = points;
-        row.errors.missing = missing;
-        row.errors.distance_inner = mean(edi);
-        row.errors.angle_inner = mean(eai);
+        row.errors = average.result();
         rows.push_back(row);
         std::cout << "  " << std::setw(32) << std::left << method.label << std::right
                   << " E_d " << paper_style(row.errors.distance) << "  E_a "
-                  << paper_style(row.errors.angle) << "  (" << points << " points, " << missing
+                  << paper_style(row.errors.angle) << "  (" << row.errors.points << " points, "
+                  << row.errors.missing
                   << " outside the patch, " << fixed(row.seconds, 2) << " s)" << std::endl;
         if (is_gauss) {
           Accuracy_row alt = row;
@@ -307,21 +263,12 @@ void run_accuracy(const Settings& settings) {
       // CGAL's heat method (whole mesh, t = h^2): distances only.
       {
         const auto start = std::chrono::steady_clock::now();
-        std::vector<double> ed, edm;
-        std::size_t points = 0;
-        for (std::size_t i = 0; i < sources.size(); ++i) {
-          const auto field = cgal_heat_distances(mesh, sources[i]);
-          const Errors e = field_errors(field, references[i]);
-          ed.push_back(e.distance);
-          edm.push_back(e.distance_max);
-          points += e.points;
-        }
+        Error_average average;  // distances only: the angle errors stay NaN
+        for (std::size_t i = 0; i < sources.size(); ++i)
+          average.add(field_errors(cgal_heat_distances(mesh, sources[i]), references[i]));
         Accuracy_row row{surface, column, "cgal_heat", "CGAL Heat_method_3 (t = h^2)",
-                         reference_kind, target, h, nv, sources.size(), {}, seconds_since(start),
-                         non_delaunay};
-        row.errors.distance = mean(ed);
-        row.errors.distance_max = *std::max_element(edm.begin(), edm.end());
-        row.errors.points = points;
+                         reference_kind, target, h, nv, sources.size(), average.result(),
+                         seconds_since(start), non_delaunay};
         rows.push_back(row);
         std::cout << "  " << std::setw(32) << std::left << row.method_label << std::right
                   << " E_d " << paper_style(row.errors.distance) << "  ("
@@ -368,16 +315,20 @@ void run_accuracy(const Settings& settings) {
       {"heat_m10", "heat m=10"}, {"heat_m1", "heat m=1"}, {"heat_m10_idt", "heat m=10 iDT"},
       {"dem", "DEM"},            {"dgpc", "DGPC"},        {"exact", "exact"},
       {"cgal_heat", "CGAL heat"}};
-  // One table in the paper's layout: a row per (quantity, method), a column
-  // per (surface, resolution).
-  auto table = [&](std::ostringstream& out, const std::vector<std::string>& surfaces, bool relative,
-                   bool inner = false) {
+  // The head of a table with a column per (surface, resolution).
+  auto table_head = [&](std::ostringstream& out, const std::vector<std::string>& surfaces) {
     out << "| |";
     for (const auto& s : surfaces)
       for (const auto& l : labels) out << ' ' << surface_name(s) << ' ' << l << " |";
     out << "\n|---|";
     for (std::size_t i = 0; i < surfaces.size() * labels.size(); ++i) out << "---|";
     out << "\n";
+  };
+  // One table in the paper's layout: a row per (quantity, method), a column
+  // per (surface, resolution).
+  auto table = [&](std::ostringstream& out, const std::vector<std::string>& surfaces, bool relative,
+                   bool inner = false) {
+    table_head(out, surfaces);
     auto info = [&](const char* name, auto value) {
       out << "| " << name << " |";
       for (const auto& s : surfaces)
@@ -481,12 +432,8 @@ void run_accuracy(const Settings& settings) {
   md << "\nThe inner half of the patches only (reference points with r <= 0.5; same maps, same\n"
         "rotation), to show how much the patch radius, which the paper does not state, matters:\n\n";
   table(md, main_surfaces, false, true);
-  md << "\n## The paper's Table 1\n\n| |";
-  for (const auto& s : main_surfaces)
-    for (const auto& l : labels) md << ' ' << surface_name(s) << ' ' << l << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_surfaces.size() * labels.size(); ++i) md << "---|";
-  md << "\n";
+  md << "\n## The paper's Table 1\n\n";
+  table_head(md, main_surfaces);
   for (const char* what : {"distance", "angle"})
     for (const char* m : {"heat", "DEM", "DGPC"}) {
       md << "| " << what << " " << m << " |";

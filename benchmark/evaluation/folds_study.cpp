@@ -93,6 +93,11 @@ struct Fold_stats {
   std::string failure;
 };
 
+/// part / whole, as a fraction of at least one (0 for an empty whole).
+double share(std::size_t part, std::size_t whole) {
+  return double(part) / double(std::max<std::size_t>(1, whole));
+}
+
 struct Patch_result {
   bool ok = false, broken = false;
   std::size_t flipped = 0, inverted = 0, triangles = 0;
@@ -275,7 +280,7 @@ void run_folds(const Settings& settings) {
       const Fold_stats& st = res.stats[key];
       std::cout << "  " << std::setw(14) << std::left << key << std::right << " patches with flips "
                 << st.patches_with_flips << "/" << st.patches << " (failed " << st.failed
-                << "), flipped triangles " << percent(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles)), 3)
+                << "), flipped triangles " << percent(share(st.flipped, st.triangles), 3)
                 << ", angle distortion median " << fixed(median(st.angle_distortion), 3)
                 << ", E_d/h " << fixed(mean_finite(st.distance_error), 3) << ", E_a "
                 << paper_style(mean_finite(st.angle_error)) << ", inverted patches "
@@ -309,7 +314,7 @@ void run_folds(const Settings& settings) {
     for (std::size_t k = 0; k < r.sources.size(); ++k) {
       auto flips = [&](const std::string& key) {
         const auto& v = r.per_source.at(key)[k];
-        return v.ok ? double(v.flipped) / double(std::max<std::size_t>(1, v.triangles)) : -1.0;
+        return v.ok ? share(v.flipped, v.triangles) : -1.0;
       };
       const double heat = flips("heat_m10"), dem = flips("dem"), dgpc = flips("dgpc");
       // Folds for both Dijkstra methods, none for heat.
@@ -382,9 +387,9 @@ void run_folds(const Settings& settings) {
       const Fold_stats& st = r.stats.at(key);
       csv << r.name << ',' << r.vertices << ',' << general(r.h) << ',' << key << ','
           << r.sources.size() << ',' << st.failed << ',' << st.patches_with_flips << ','
-          << general(double(st.patches_with_flips) / double(std::max<std::size_t>(1, st.patches)))
+          << general(share(st.patches_with_flips, st.patches))
           << ',' << st.triangles << ',' << st.flipped << ','
-          << general(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles))) << ','
+          << general(share(st.flipped, st.triangles)) << ','
           << general(median(st.angle_distortion)) << ',' << general(percentile(st.angle_distortion, 95))
           << ',' << general(median(st.area_distortion)) << ','
           << general(percentile(st.area_distortion, 95)) << ',' << general(mean_finite(st.distance_error))
@@ -425,9 +430,41 @@ void run_folds(const Settings& settings) {
        << (r.skipped.empty() ? percent(r.non_delaunay, 1) : "") << " | "
        << (r.skipped.empty() ? "closed manifold triangle mesh" : "skipped: " + r.skipped) << " |\n";
 
-  const std::vector<std::pair<std::string, std::string>> main_methods = {
+  using Method_column = std::pair<std::string, std::string>;  // key, heading
+  const std::vector<Method_column> main_methods = {
       {"heat_m10", "heat (m=10)"}, {"heat_m10_idt", "heat (m=10, iDT)"}, {"dem", "DEM"},
       {"dgpc", "DGPC"}, {"exact", "exact"}};
+  std::vector<Method_column> vs_exact;  // the methods compared with the exact map
+  for (const auto& m : main_methods)
+    if (m.first != "exact") vs_exact.push_back(m);
+  // The rest of a table's head after "| mesh |": a column per method.
+  auto method_head = [&](const std::vector<Method_column>& methods) {
+    for (const auto& m : methods) md << ' ' << m.second << " |";
+    md << "\n|---|";
+    for (std::size_t i = 0; i < methods.size(); ++i) md << "---|";
+    md << "\n";
+  };
+  // A row per mesh that ran, a cell per method; `cell(stats of the method,
+  // mesh result, method key)` writes the cell's content.
+  auto mesh_rows = [&](const std::vector<Method_column>& methods, auto cell) {
+    for (const auto& r : results) {
+      if (!r.skipped.empty()) continue;
+      md << "| " << r.name << " |";
+      for (const auto& m : methods) {
+        md << ' ';
+        cell(r.stats.at(m.first), r, m.first);
+        md << " |";
+      }
+      md << "\n";
+    }
+  };
+  std::size_t total_patches = 0;
+  for (const auto& r : results)
+    if (r.skipped.empty()) total_patches += r.sources.size();
+  auto totals_row = [&](std::map<std::string, std::size_t>& totals) {
+    md << "| all |";
+    for (const auto& m : main_methods) md << ' ' << totals[m.first] << "/" << total_patches << " |";
+  };
   auto flips_cell = [](const Fold_stats& st) {
     std::string note;
     if (st.failed) note += std::to_string(st.failed) + " failed";
@@ -436,121 +473,59 @@ void run_folds(const Settings& settings) {
            (note.empty() ? "" : " (" + note + ")");
   };
   md << "\n## Patches with fold-overs\n\n| mesh |";
-  for (const auto& m : main_methods) md << ' ' << m.second << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-  md << "\n";
-  std::size_t total_patches = 0;
+  method_head(main_methods);
   std::map<std::string, std::size_t> total_flips;
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods) {
-      md << ' ' << flips_cell(r.stats.at(m.first)) << " |";
-      total_flips[m.first] += r.stats.at(m.first).patches_with_flips;
-    }
-    total_patches += r.sources.size();
-    md << "\n";
-  }
-  md << "| all |";
-  for (const auto& m : main_methods) md << ' ' << total_flips[m.first] << "/" << total_patches << " |";
+  mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result&, const std::string& key) {
+    md << flips_cell(st);
+    total_flips[key] += st.patches_with_flips;
+  });
+  totals_row(total_flips);
   md << "\n\n*broken*: patches whose distance field collapsed (vertices other than the source at r = 0);\n"
         "all their triangles are degenerate, so they count as patches with fold-overs.\n";
   md << "\n## Patches with strictly inverted triangles\n\n"
         "Only triangles with signed (u, v) area below -1e-9 times their squared (u, v) edge lengths;\n"
         "collapsed (zero-area) triangles are not counted here.\n\n| mesh |";
-  for (const auto& m : main_methods) md << ' ' << m.second << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-  md << "\n";
+  method_head(main_methods);
   std::map<std::string, std::size_t> total_inversions;
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods) {
-      const auto& st = r.stats.at(m.first);
-      md << ' ' << st.patches_with_inversions << "/" << st.patches << " |";
-      total_inversions[m.first] += st.patches_with_inversions;
-    }
-    md << "\n";
-  }
-  md << "| all |";
-  for (const auto& m : main_methods) md << ' ' << total_inversions[m.first] << "/" << total_patches << " |";
+  mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result&, const std::string& key) {
+    md << st.patches_with_inversions << "/" << st.patches;
+    total_inversions[key] += st.patches_with_inversions;
+  });
+  totals_row(total_inversions);
   md << "\n\n## Flipped triangles (fraction of all patch triangles; strictly inverted in brackets)\n\n| mesh |";
-  for (const auto& m : main_methods) md << ' ' << m.second << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-  md << "\n";
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods) {
-      const auto& st = r.stats.at(m.first);
-      md << ' ' << percent(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles)), 3) << " ("
-         << percent(double(st.inverted) / double(std::max<std::size_t>(1, st.triangles)), 3) << ") |";
-    }
-    md << "\n";
-  }
+  method_head(main_methods);
+  mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result&, const std::string&) {
+    md << percent(share(st.flipped, st.triangles), 3) << " (" << percent(share(st.inverted, st.triangles), 3)
+       << ")";
+  });
   auto distortion_table = [&](const char* title, bool angle) {
     md << "\n## " << title << " (median / 95th percentile)\n\n| mesh |";
-    for (const auto& m : main_methods) md << ' ' << m.second << " |";
-    md << "\n|---|";
-    for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-    md << "\n";
-    for (const auto& r : results) {
-      if (!r.skipped.empty()) continue;
-      md << "| " << r.name << " |";
-      for (const auto& m : main_methods) {
-        const auto& v = angle ? r.stats.at(m.first).angle_distortion : r.stats.at(m.first).area_distortion;
-        md << ' ' << fixed(median(v), 3) << " / " << fixed(percentile(v, 95), 3) << " |";
-      }
-      md << "\n";
-    }
+    method_head(main_methods);
+    mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result&, const std::string&) {
+      const auto& v = angle ? st.angle_distortion : st.area_distortion;
+      md << fixed(median(v), 3) << " / " << fixed(percentile(v, 95), 3);
+    });
   };
   distortion_table("Angle distortion s1/s2", true);
   distortion_table("Area distortion |log(s1 s2)|", false);
   md << "\n## Where the folds are: nearest corner's r / patch's largest r, per flipped triangle "
         "(median / 10th percentile)\n\n"
         "Near 1: at the rim of the patch (where it reaches a cut locus); small: near the source.\n\n| mesh |";
-  for (const auto& m : main_methods) md << ' ' << m.second << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-  md << "\n";
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods) {
-      const auto& v = r.stats.at(m.first).flip_position;
-      md << ' ' << (v.empty() ? std::string("-") : fixed(median(v), 2) + " / " + fixed(percentile(v, 10), 2)) << " |";
-    }
-    md << "\n";
-  }
+  method_head(main_methods);
+  mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result&, const std::string&) {
+    const auto& v = st.flip_position;
+    md << (v.empty() ? std::string("-") : fixed(median(v), 2) + " / " + fixed(percentile(v, 10), 2));
+  });
   md << "\n## Accuracy against the exact map (E_d / h and E_a)\n\n| mesh |";
-  for (const auto& m : main_methods)
-    if (m.first != "exact") md << ' ' << m.second << " |";
-  md << "\n|---|---|---|---|---|\n";
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods) {
-      if (m.first == "exact") continue;
-      const auto& st = r.stats.at(m.first);
-      md << ' ' << fixed(mean_finite(st.distance_error), 3) << " / " << paper_style(mean_finite(st.angle_error)) << " |";
-    }
-    md << "\n";
-  }
+  method_head(vs_exact);
+  mesh_rows(vs_exact, [&](const Fold_stats& st, const Mesh_result&, const std::string&) {
+    md << fixed(mean_finite(st.distance_error), 3) << " / " << paper_style(mean_finite(st.angle_error));
+  });
   md << "\n## Mean query time per patch (s, one core)\n\n| mesh |";
-  for (const auto& m : main_methods) md << ' ' << m.second << " |";
-  md << "\n|---|";
-  for (std::size_t i = 0; i < main_methods.size(); ++i) md << "---|";
-  md << "\n";
-  for (const auto& r : results) {
-    if (!r.skipped.empty()) continue;
-    md << "| " << r.name << " |";
-    for (const auto& m : main_methods)
-      md << ' ' << general(r.stats.at(m.first).seconds / double(r.sources.size()), 3) << " |";
-    md << "\n";
-  }
+  method_head(main_methods);
+  mesh_rows(main_methods, [&](const Fold_stats& st, const Mesh_result& r, const std::string&) {
+    md << general(st.seconds / double(r.sources.size()), 3);
+  });
 
   // Time factor.
   md << "\n## Effect of the time factor m (t = m h^2)\n\n"
@@ -562,7 +537,7 @@ void run_folds(const Settings& settings) {
       const auto& st = r.stats.at("heat_m" + general(m));
       md << "| " << r.name << " | " << general(m) << " | " << flips_cell(st) << " | "
          << st.patches_with_inversions << "/" << st.patches << " | "
-         << percent(double(st.flipped) / double(std::max<std::size_t>(1, st.triangles)), 3) << " | "
+         << percent(share(st.flipped, st.triangles), 3) << " | "
          << fixed(median(st.angle_distortion), 3) << " / " << fixed(percentile(st.angle_distortion, 95), 3)
          << " | " << fixed(mean_finite(st.distance_error), 3) << " | " << paper_style(mean_finite(st.angle_error))
          << " |\n";

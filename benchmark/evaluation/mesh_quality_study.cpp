@@ -122,22 +122,14 @@ void run_mesh_quality(const Settings& settings) {
     set.add<expmap::Exact_exponential_map>("exact", "exact");
     const expmap::Patch patch = expmap::Patch::geodesic_radius(radius + 3 * h);
     for (const Method& method : set.methods) {
-      std::vector<double> ed, ea, edm, eam;
+      Error_average average;
       double seconds = method.precompute_seconds;
       std::size_t failed = 0;
       std::string failure;
       for (std::size_t s : sources) {
-        std::vector<Reference_point> ref;
-        for (std::size_t v = 0; v < c.soup.points.size(); ++v) {
-          if (v == s) continue;
-          const auto polar = expmap::plane_exponential_map(c.soup.points[s], c.soup.points[v], {{1, 0, 0}});
-          if (polar.r > radius) continue;
-          Reference_point p;
-          p.vertex = int(v);
-          p.r = polar.r;
-          p.theta = polar.theta_unrotated;
-          ref.push_back(p);
-        }
+        const std::vector<Reference_point> ref = vertex_references(c.soup, s, radius, [&](const Vec3& q) {
+          return expmap::plane_exponential_map(c.soup.points[s], q, {{1, 0, 0}});
+        });
         const auto start = std::chrono::steady_clock::now();
         Map map;
         try {
@@ -153,18 +145,11 @@ void run_mesh_quality(const Settings& settings) {
         detail << c.key << ',' << s << ',' << method.key << ',' << general(e.distance) << ','
                << general(e.angle) << ',' << general(e.distance_max) << ',' << general(e.angle_max)
                << ",ok\n";
-        ed.push_back(e.distance);
-        ea.push_back(e.angle);
-        edm.push_back(e.distance_max);
-        eam.push_back(e.angle_max);
+        average.add(e);
         if (s == 0 && (method.key == "heat_m10" || method.key == "heat_m10_idt"))
           panels_for_figure.push_back({&mesh, map, "heat " + std::string(method.key == "heat_m10" ? "" : "iDT ") + "(" + c.key + ")"});
       }
-      Row row{c.key, method.key, method.label, h, {}, seconds, failed, failure};
-      row.errors.distance = mean(ed);
-      row.errors.angle = mean(ea);
-      row.errors.distance_max = edm.empty() ? std::nan("") : *std::max_element(edm.begin(), edm.end());
-      row.errors.angle_max = eam.empty() ? std::nan("") : *std::max_element(eam.begin(), eam.end());
+      Row row{c.key, method.key, method.label, h, average.result(), seconds, failed, failure};
       rows.push_back(row);
       if (failed) std::cout << "  " << method.label << ": " << failed << " of " << sources.size() << " sources failed: " << failure << "\n";
       std::cout << "  " << std::setw(32) << std::left << method.label << std::right << " E_d "
@@ -230,16 +215,30 @@ void run_mesh_quality(const Settings& settings) {
                                          "dem", "dgpc", "exact"};
   md << "| method | regular E_d | regular E_a | flipped E_d | flipped E_a | anisotropic E_d | "
         "anisotropic E_a |\n|---|---|---|---|---|---|---|\n";
-  for (const auto& k : keys) {
-    const Row* any = find("regular", k);
-    md << "| " << (any ? any->method_label : k) << " |";
-    for (const char* mesh : {"regular", "flipped", "anisotropic"}) {
+  // A table row per method: its label, then what `cells(method key)` writes.
+  auto method_rows = [&](auto cells) {
+    for (const auto& k : keys) {
+      const Row* any = find("regular", k);
+      md << "| " << (any ? any->method_label : k) << " |";
+      cells(k);
+      md << "\n";
+    }
+  };
+  const std::vector<std::string> meshes = {"regular", "flipped", "anisotropic"};
+  // A cell per mesh: `value(row)` (empty without a row).
+  auto mesh_cells = [&](const std::string& k, auto value) {
+    for (const auto& mesh : meshes) {
+      const Row* r = find(mesh, k);
+      md << ' ' << (r ? value(*r) : std::string()) << " |";
+    }
+  };
+  method_rows([&](const std::string& k) {
+    for (const auto& mesh : meshes) {
       const Row* r = find(mesh, k);
       md << ' ' << (r ? paper_style(r->errors.distance) : "") << " | "
          << (r ? paper_style(r->errors.angle) : "") << " |";
     }
-    md << "\n";
-  }
+  });
   md << "| paper, heat (t = h^2) | 0.910e-3 | 0.900e-3 | 0.720e-2 | 0.205e-2 | 0.770e-2 | 0.230e-2 |\n";
   for (const auto& r : rows)
     if (r.failed) {
@@ -254,19 +253,10 @@ void run_mesh_quality(const Settings& settings) {
   md << "\nDistance relative to h (E_d / h) and worst errors:\n\n"
      << "| method | regular E_d/h | flipped E_d/h | anisotropic E_d/h | regular max E_a | flipped max E_a | "
         "anisotropic max E_a |\n|---|---|---|---|---|---|---|\n";
-  for (const auto& k : keys) {
-    const Row* any = find("regular", k);
-    md << "| " << (any ? any->method_label : k) << " |";
-    for (const char* mesh : {"regular", "flipped", "anisotropic"}) {
-      const Row* r = find(mesh, k);
-      md << ' ' << (r ? fixed(r->errors.distance / r->h, 3) : "") << " |";
-    }
-    for (const char* mesh : {"regular", "flipped", "anisotropic"}) {
-      const Row* r = find(mesh, k);
-      md << ' ' << (r ? paper_style(r->errors.angle_max) : "") << " |";
-    }
-    md << "\n";
-  }
+  method_rows([&](const std::string& k) {
+    mesh_cells(k, [](const Row& r) { return fixed(r.errors.distance / r.h, 3); });
+    mesh_cells(k, [](const Row& r) { return paper_style(r.errors.angle_max); });
+  });
   md << "\nThe paper does not give its grids' edge length or patch radius, so its absolute distance\n"
         "errors compare only in order of magnitude; the ratios between the three meshes (flipped /\n"
         "regular: 7.9x in distance, 2.3x in angle; anisotropic / regular: 8.5x and 2.6x) are the\n"
