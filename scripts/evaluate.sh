@@ -15,8 +15,8 @@
 #   doc/evaluation/*.csv                                       the raw numbers
 #   doc/evaluation/output.txt                                  what the program printed
 #   doc/figures/*.png                                          the pictures
-# (doc/results.md discusses them; benchmark/expmap_evaluate.cpp documents
-# every measure.)
+# (doc/results.md discusses them; benchmark/expmap_evaluate.cpp and the
+# study files in benchmark/evaluation/ document every measure.)
 #
 # Arguments are passed to expmap-evaluate, e.g. `scripts/evaluate.sh --folds`
 # or `--sources 20`. Time on 2 cores: about 6 minutes of evaluation (the exact

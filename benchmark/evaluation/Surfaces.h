@@ -17,6 +17,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -99,7 +100,33 @@ inline expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed
   }
   Mesh hull;
   CGAL::convex_hull_3(points.begin(), points.end(), hull);
-  return to_soup(hull);
+  // The hull numbers its vertices in an order that depends on the memory
+  // layout of the run (seen: other sources picked, other errors, after other
+  // studies ran first). Renumber them in the order of the jittered points and
+  // sort the faces, so vertex indices -- and the sources picked by index --
+  // are the same in every run.
+  const expmap::Triangle_soup unordered = to_soup(hull);
+  std::map<std::array<double, 3>, int> input_index;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    input_index[{{points[i].x(), points[i].y(), points[i].z()}}] = static_cast<int>(i);
+  std::vector<int> order(unordered.points.size());
+  for (std::size_t v = 0; v < order.size(); ++v) order[v] = static_cast<int>(v);
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return input_index.at(unordered.points[a]) < input_index.at(unordered.points[b]);
+  });
+  std::vector<int> new_index(order.size());
+  expmap::Triangle_soup soup;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    new_index[order[k]] = static_cast<int>(k);
+    soup.points.push_back(unordered.points[order[k]]);
+  }
+  for (auto t : unordered.triangles) {
+    for (int& v : t) v = new_index[v];
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());  // orientation kept
+    soup.triangles.push_back(t);
+  }
+  std::sort(soup.triangles.begin(), soup.triangles.end());
+  return soup;
 }
 
 /// Irregular Delaunay height field: the points of a hexagonal lattice of
