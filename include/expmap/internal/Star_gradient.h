@@ -40,11 +40,17 @@ struct Star_gradient {
   }
 };
 
-inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_frame& frame) {
+/// The star of s (s first, then its neighbours), without weights yet.
+inline Star_gradient star_of(const Mesh_arrays& m, int s) {
   Star_gradient g;
   g.vertices.push_back(s);
   for (int p = m.neighbor_start[s]; p < m.neighbor_start[s + 1]; ++p)
     g.vertices.push_back(m.neighbor[p]);
+  return g;
+}
+
+inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_frame& frame) {
+  Star_gradient g = star_of(m, s);
   g.along_e1.assign(g.vertices.size(), 0.0);
   g.along_e2.assign(g.vertices.size(), 0.0);
   auto column_of = [&](int v) {
@@ -86,10 +92,7 @@ inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_fr
 /// general position; returns std::nullopt otherwise.
 inline std::optional<Star_gradient> quadratic_fit_star_gradient(const Mesh_arrays& m, int s,
                                                                 const Tangent_frame& frame) {
-  Star_gradient g;
-  g.vertices.push_back(s);
-  for (int p = m.neighbor_start[s]; p < m.neighbor_start[s + 1]; ++p)
-    g.vertices.push_back(m.neighbor[p]);
+  Star_gradient g = star_of(m, s);
   const Eigen::Index n = static_cast<Eigen::Index>(g.vertices.size());
   if (n < 6) return std::nullopt;
   std::vector<std::array<double, 2>> position(g.vertices.size(), {{0.0, 0.0}});
