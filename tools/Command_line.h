@@ -9,6 +9,8 @@
 /// more than it saves. Only syntax and value ranges are checked here; what
 /// needs the mesh (the source index) is checked after reading it.
 
+#include <expmap/Angle_estimator.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -46,7 +48,8 @@ struct Compute_arguments {
   std::string method = "heat";
   std::optional<double> time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
-  std::optional<std::string> angles;     // "area-weighted" or "quadratic-fit"
+  std::optional<expmap::Angle_estimator> angles;
+  std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<std::array<double, 3>> reference;
   bool triangulate = false;
   std::vector<Output> outputs;
@@ -184,10 +187,24 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
                           *a.laplacian + "')");
     } else if (name == "--angles") {
       once(a.angles.has_value());
-      a.angles = take_value();
-      if (*a.angles != "area-weighted" && *a.angles != "quadratic-fit")
-        throw Usage_error("--angles must be 'area-weighted' or 'quadratic-fit' (got '" +
-                          *a.angles + "')");
+      try {
+        a.angles = expmap::angle_estimator_from_string(take_value());
+      } catch (const expmap::Invalid_input& e) {
+        throw Usage_error(std::string("--angles: ") + e.what());
+      }
+    } else if (name == "--near-source-blend") {
+      once(a.near_source_blend.has_value());
+      const std::string text = take_value();
+      const std::string::size_type comma = text.find(',');
+      if (comma == std::string::npos)
+        throw Usage_error("--near-source-blend takes BEGIN,END in mean edge lengths (got '" +
+                          text + "')");
+      expmap::Near_source_blend blend;
+      blend.begin = parse_real(name, text.substr(0, comma));
+      blend.end = parse_real(name, text.substr(comma + 1));
+      if (!(blend.begin >= 0) || !(blend.end >= blend.begin))
+        throw Usage_error("--near-source-blend needs 0 <= BEGIN <= END (got '" + text + "')");
+      a.near_source_blend = blend;
     } else if (name == "--reference") {
       once(a.reference.has_value());
       a.reference = parse_vector(name, take_value());

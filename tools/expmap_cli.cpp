@@ -84,20 +84,17 @@ Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index so
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
     options.laplacian = expmap::Laplacian_mode::direct;
-  if (a.angles == std::string("quadratic-fit"))
-    options.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
-  else if (a.angles == std::string("area-weighted"))
-    options.angle_estimator = expmap::Angle_estimator::log_heat_gradient;
+  if (a.angles) options.angle_estimator = *a.angles;
+  if (a.near_source_blend) options.near_source_blend = *a.near_source_blend;
   Run run = timed_run([&] { return expmap::Heat_exponential_map<Mesh>(mesh, options); }, source,
                       patch, query);
   std::ostringstream d;
   d << "heat method (time factor " << options.time_factor << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "intrinsic Delaunay")
     << " Laplacian, "
-    << (options.angle_estimator == expmap::Angle_estimator::log_heat_quadratic_fit
-            ? "quadratic-fit"
-            : "area-weighted")
-    << " angles)";
+    << expmap::to_string(options.angle_estimator) << " angles, chord directions to "
+    << options.near_source_blend.begin << " h, blended by " << options.near_source_blend.end
+    << " h)";
   run.description = d.str();
   return run;
 }
@@ -184,10 +181,14 @@ std::string compute_help() {
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
        "  --angles A           heat only: how the angle is read off the heat at the\n"
-       "                       source's one-ring: area-weighted (the paper's gradient,\n"
-       "                       of log h; smoothest maps) | quadratic-fit (least-squares\n"
-       "                       quadratic; more accurate on irregular meshes)\n"
-       "                       (default: area-weighted)\n"
+       "                       source's one-ring: heat-quadratic-fit (least-squares\n"
+       "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
+       "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
+       "                       log-heat-quadratic-fit (of log h; one solve per\n"
+       "                       neighbour) (default: heat-quadratic-fit)\n"
+       "  --near-source-blend B,E  heat only: chord directions up to B mean edge\n"
+       "                       lengths from the source, heat directions from E on,\n"
+       "                       blended between; 0,0 for pure heat angles (default: 2,6)\n"
        "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"

@@ -173,8 +173,9 @@ BOOST_AUTO_TEST_CASE(every_method_answers_the_same_patch_size) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(both_angle_estimators_answer) {
-  for (const char* angles : {"area-weighted", "quadratic-fit"}) {
+BOOST_AUTO_TEST_CASE(every_angle_estimator_answers) {
+  for (const char* angles : {"heat-gradient", "log-heat-gradient", "log-heat-quadratic-fit",
+                             "heat-quadratic-fit"}) {
     BOOST_TEST_CONTEXT("--angles " << angles) {
       const int status = run("compute " + file("grid.off") + " --source 24 --vertices 10 --angles " +
                              angles + " -o " + file("map.csv"));
@@ -196,7 +197,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--laplacian", "--angles", "--reference", "--triangulate", "--output"})
+        "--laplacian", "--angles", "--near-source-blend", "--reference", "--triangulate", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
