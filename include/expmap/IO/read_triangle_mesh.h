@@ -12,6 +12,7 @@
 #include <expmap/Errors.h>
 #include <expmap/IO/check_declared_sizes.h>
 
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
@@ -23,7 +24,9 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <iterator>
 #include <numeric>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -49,21 +52,31 @@ struct Mesh_reading_report {
   /// soup consistently"; empty if the file was used as it is.
   std::vector<std::string> notes;
   /// `file_index[i]` is the position in the file of vertex `i` of the mesh.
-  /// The identity unless `repair` removed vertices; vertices that orienting
-  /// a soup had to split get indices from the file's vertex count upwards.
+  /// The identity, except that the copies made of a non-manifold vertex
+  /// (added after the file's vertices) have the index of the vertex they
+  /// copy, and that `repair` removes vertices.
   std::vector<std::size_t> file_index;
   std::size_t file_vertices = 0;  ///< vertices the file lists
 };
 
 namespace internal {
 
-/// Counts what `orient_polygon_soup` changes, for the report.
+/// Counts what `orient_polygon_soup` changes, for the report, and which
+/// point each new point copies.
 struct Soup_orientation_counter : CGAL::Polygon_mesh_processing::Default_orientation_visitor {
   std::size_t* reversed;
-  std::size_t* split;
+  std::vector<std::pair<std::size_t, std::size_t>>* copies;  // (original, copy)
   void polygon_orientation_reversed(std::size_t) { ++*reversed; }
-  void duplicated_vertex(std::size_t, std::size_t) { ++*split; }
+  void duplicated_vertex(std::size_t original, std::size_t copy) {
+    copies->emplace_back(original, copy);
+  }
 };
+
+/// The note on split non-manifold vertices.
+inline std::string split_note(std::size_t copies) {
+  return "split non-manifold vertices into " + std::to_string(copies) +
+         " extra copies, one per sheet meeting there";
+}
 
 /// Drops polygons that cannot be faces (fewer than three vertices, or a
 /// vertex twice) and duplicates; never renumbers points. Returns notes.
@@ -97,9 +110,9 @@ std::vector<std::string> clean_polygons(const std::vector<Point>& points,
 /// The file as a polygon soup, oriented and turned into a mesh: the path for
 /// files whose faces do not form an oriented 2-manifold as they stand.
 template <class Point>
-std::vector<std::string> read_as_oriented_soup(const std::string& path,
-                                               CGAL::Surface_mesh<Point>& mesh,
-                                               std::size_t& file_vertices) {
+std::vector<std::string> read_as_oriented_soup(
+    const std::string& path, CGAL::Surface_mesh<Point>& mesh, std::size_t& file_vertices,
+    std::vector<std::pair<std::size_t, std::size_t>>& copies) {
   namespace PMP = CGAL::Polygon_mesh_processing;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
@@ -110,16 +123,13 @@ std::vector<std::string> read_as_oriented_soup(const std::string& path,
   file_vertices = points.size();
   std::vector<std::string> notes = clean_polygons(points, polygons);
   if (polygons.empty()) throw Invalid_input("'" + path + "' has no usable face");
-  std::size_t reversed = 0, split = 0;
+  std::size_t reversed = 0;
   Soup_orientation_counter counter;
   counter.reversed = &reversed;
-  counter.split = &split;
+  counter.copies = &copies;
   PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(counter));
   if (reversed) notes.push_back("reversed " + std::to_string(reversed) + " faces to orient it");
-  if (split)
-    notes.push_back("split " + std::to_string(split) +
-                    " non-manifold vertices into copies (numbered from " +
-                    std::to_string(file_vertices) + " on)");
+  if (!copies.empty()) notes.push_back(split_note(copies.size()));
   mesh.clear();
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return notes;
@@ -136,9 +146,10 @@ std::vector<std::string> read_as_oriented_soup(const std::string& path,
 ///    in random orientation, non-manifold edges or vertices, faces repeating
 ///    a vertex, duplicate faces), as a polygon soup instead: such faces are
 ///    dropped, the rest is oriented with
-///    `CGAL::Polygon_mesh_processing::orient_polygon_soup` (which may split
-///    non-manifold vertices into copies, added after the file's vertices)
-///    and converted with `polygon_soup_to_polygon_mesh`;
+///    `CGAL::Polygon_mesh_processing::orient_polygon_soup` and converted with
+///    `polygon_soup_to_polygon_mesh`; either way a vertex where several
+///    sheets meet is split into one copy per sheet (added after the file's
+///    vertices), so that no map passes from one sheet to another through it;
 /// 3. faces with more than three vertices are triangulated
 ///    (`options.triangulate`);
 /// 4. degenerate faces are removed (`options.repair`).
@@ -156,18 +167,30 @@ Mesh_reading_report read_triangle_mesh(const std::string& path, CGAL::Surface_me
   check_declared_sizes(path);
   Mesh_reading_report report;
   mesh.clear();
-  std::vector<std::string> soup_notes;
+  std::vector<std::pair<std::size_t, std::size_t>> copies;  // (original, copy)
   if (CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false)) &&
       !mesh.is_empty()) {
+    // A Surface_mesh holds a vertex where two sheets touch (a bow tie), but
+    // a map through it would fold one sheet onto a single direction.
+    using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
     report.file_vertices = mesh.number_of_vertices();
+    std::vector<std::vector<Vertex>> split;
+    CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
+        mesh, CGAL::parameters::output_iterator(std::back_inserter(split)));
+    for (const auto& group : split)
+      for (std::size_t k = 1; k < group.size(); ++k) copies.emplace_back(group[0], group[k]);
+    if (!copies.empty()) report.notes.push_back(internal::split_note(copies.size()));
   } else {
-    soup_notes = internal::read_as_oriented_soup(path, mesh, report.file_vertices);
-  }
-  if (!soup_notes.empty()) {
+    const auto soup_notes =
+        internal::read_as_oriented_soup(path, mesh, report.file_vertices, copies);
     std::string note = "its faces are not an oriented 2-manifold mesh; read as a polygon soup";
     for (const std::string& s : soup_notes) note += ", " + s;
     report.notes.push_back(note);
   }
+  report.file_index.resize(mesh.number_of_vertices());
+  std::iota(report.file_index.begin(), report.file_index.end(), std::size_t(0));
+  for (const auto& [original, copy] : copies)
+    report.file_index[copy] = report.file_index[original];
 
   if (options.triangulate && !CGAL::is_triangle_mesh(mesh)) {
     std::size_t polygons = 0;
@@ -178,14 +201,12 @@ Mesh_reading_report read_triangle_mesh(const std::string& path, CGAL::Surface_me
                            " faces with more than three vertices (no vertex added)");
   }
 
-  report.file_index.resize(mesh.number_of_vertices());
-  std::iota(report.file_index.begin(), report.file_index.end(), std::size_t(0));
   if (options.repair && CGAL::is_triangle_mesh(mesh)) {
     auto file_index =
         mesh.template add_property_map<typename CGAL::Surface_mesh<Point>::Vertex_index,
                                        std::size_t>("v:expmap_file_index")
             .first;
-    for (auto v : mesh.vertices()) file_index[v] = static_cast<std::size_t>(v);
+    for (auto v : mesh.vertices()) file_index[v] = report.file_index[v];
     const Degenerate_face_repair repair = repair_degenerate_faces(mesh);
     report.file_index.clear();
     for (auto v : mesh.vertices()) report.file_index.push_back(file_index[v]);

@@ -13,9 +13,12 @@
 #include <expmap/IO/internal/Declared_size_scanner.h>
 
 #include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace expmap {
 namespace IO {
@@ -45,7 +48,7 @@ inline std::int64_t read_big_endian_int32(std::istream& in) {
 
 /// Checks an OFF file (ASCII or plain binary): header counts, then each
 /// face's vertex count against the numbers on its line (ASCII) or the bytes
-/// left (binary). Leaves files that are not OFF to CGAL's reader, which
+/// left (binary), and each ASCII face's indices against the vertex count. Leaves files that are not OFF to CGAL's reader, which
 /// refuses them without allocating.
 /// \throws Invalid_input naming the count that cannot fit.
 inline void check_off_sizes(Declared_size_scanner& file) {
@@ -126,16 +129,25 @@ inline void check_off_sizes(Declared_size_scanner& file) {
     if (!std::getline(in, line)) return;
     line = line.substr(0, line.find('#'));
     std::istringstream numbers(line);
-    std::string first;
-    numbers >> first;
-    const double corners = std::strtod(first.c_str(), nullptr);
-    std::size_t indices = 0;
-    for (std::string token; numbers >> token;) ++indices;
+    std::vector<std::string> tokens;
+    for (std::string token; numbers >> token;) tokens.push_back(token);
+    if (tokens.empty()) continue;  // cannot happen after skip_off_comments
+    const std::string name = "face " + std::to_string(face);
+    const double corners = std::strtod(tokens[0].c_str(), nullptr);
     // CGAL reads the count as a double and casts it to an unsigned size: a
     // negative, huge or non-finite count becomes an allocation of gigabytes.
-    if (!(corners >= 0 && corners <= static_cast<double>(indices)))
-      file.fail("face " + std::to_string(face) + " declares " + first + " vertices but its line lists " +
-                std::to_string(indices) + " numbers after the count");
+    if (!(corners >= 0 && corners <= static_cast<double>(tokens.size()) - 1))
+      file.fail(name + " declares " + tokens[0] + " vertices but its line lists " +
+                std::to_string(tokens.size() - 1) + " numbers after the count");
+    // CGAL casts each index from a double too: 1e20 or -1 would wrap to some
+    // vertex of the mesh instead of being refused.
+    for (std::size_t k = 1; k <= static_cast<std::size_t>(corners); ++k) {
+      const double index = std::strtod(tokens[k].c_str(), nullptr);
+      if (!(index >= 0 && index < static_cast<double>(nv) && index == std::floor(index)))
+        file.fail(name + " refers to vertex " + tokens[k] + ", but the file has " +
+                  std::to_string(nv) + " vertices" +
+                  (nv ? " (0 to " + std::to_string(nv - 1) + ")" : ""));
+    }
   }
 }
 

@@ -34,6 +34,8 @@ inline std::uint64_t ply_type_size(const std::string& type) {
 struct Ply_property {
   std::uint64_t value_size = 0;  // bytes of a scalar, or of each list item
   std::uint64_t count_size = 0;  // bytes of a list's length; 0 for a scalar
+  bool signed_items = false;
+  bool vertex_indices = false;   // a face's vertex list: items must be vertices
 };
 
 struct Ply_element {
@@ -54,7 +56,8 @@ inline bool read_ply_binary_count(std::istream& in, std::uint64_t bytes, bool bi
 }
 
 /// Checks a PLY file (ASCII or binary): each element's count against the
-/// bytes after the header, then every list length against the bytes left.
+/// bytes after the header, then every list length against the bytes left,
+/// and every face's vertex indices against the vertex count.
 /// Leaves files without a PLY header to CGAL's reader.
 /// \throws Invalid_input naming the count that cannot fit.
 inline void check_ply_sizes(Declared_size_scanner& file) {
@@ -90,6 +93,13 @@ inline void check_ply_sizes(Declared_size_scanner& file) {
         property.count_size = ply_type_size(count_type);
         property.value_size = ply_type_size(item_type);
         if (!property.count_size || !property.value_size) return;  // CGAL refuses it
+        std::string name;
+        words >> name;
+        property.signed_items = item_type[0] != 'u';
+        // CGAL 5.5 does not check these against the vertex count: an index
+        // out of range crashes its Surface_mesh reader.
+        property.vertex_indices = elements.back().name == "face" &&
+                                  (name == "vertex_indices" || name == "vertex_index");
       } else {
         property.value_size = ply_type_size(type);
         if (!property.value_size) return;
@@ -101,6 +111,15 @@ inline void check_ply_sizes(Declared_size_scanner& file) {
   const bool ascii = format == "ascii";
   const bool big_endian = format == "binary_big_endian";
   if (!ascii && !big_endian && format != "binary_little_endian") return;
+
+  std::uint64_t vertex_count = 0;
+  for (const Ply_element& element : elements)
+    if (element.name == "vertex") vertex_count = element.count;
+  auto check_index = [&](long long index, const std::string& where) {
+    if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count)
+      file.fail(where + " refers to vertex " + std::to_string(index) + ", but the file has " +
+                std::to_string(vertex_count) + " vertices");
+  };
 
   // ASCII: at least a digit and a separator per value; binary: the sizes.
   for (const Ply_element& element : elements) {
@@ -124,7 +143,10 @@ inline void check_ply_sizes(Declared_size_scanner& file) {
             file.fail(where + " has list length '" + token + "'");
           if (worth_checking(static_cast<std::uint64_t>(length)))
             file.require_room(static_cast<std::uint64_t>(length), 2, where + " declares list length");
-          for (long long k = 0; k < length; ++k) in >> token;
+          for (long long k = 0; k < length && in >> token; ++k) {
+            long long index = 0;
+            if (p.vertex_indices && parse_integer(token, index)) check_index(index, where);
+          }
         } else if (!p.count_size) {
           in.seekg(static_cast<std::streamoff>(p.value_size), std::ios::cur);
         } else {
@@ -132,7 +154,20 @@ inline void check_ply_sizes(Declared_size_scanner& file) {
           if (!read_ply_binary_count(in, p.count_size, big_endian, length)) return;
           if (worth_checking(length))
             file.require_room(length, p.value_size, where + " declares list length");
-          in.seekg(static_cast<std::streamoff>(length * p.value_size), std::ios::cur);
+          if (!p.vertex_indices) {
+            in.seekg(static_cast<std::streamoff>(length * p.value_size), std::ios::cur);
+            continue;
+          }
+          for (std::uint64_t k = 0; k < length; ++k) {
+            std::uint64_t bits = 0;
+            if (!read_ply_binary_count(in, p.value_size, big_endian, bits)) return;
+            const unsigned shift = static_cast<unsigned>(64 - 8 * p.value_size);
+            // Sign-extend a signed item of fewer than 8 bytes.
+            const long long index =
+                p.signed_items ? static_cast<long long>(bits << shift) >> shift
+                               : static_cast<long long>(bits);
+            check_index(index, where);
+          }
         }
       }
 }
