@@ -42,7 +42,9 @@ enum class Angle_estimator {
   /// where the logarithmic estimators solve one per star vertex; measured on
   /// regular and jittered spheres, its angles are as accurate as
   /// `log_heat_quadratic_fit`'s. Falls back to `heat_gradient` at sources
-  /// with fewer than five neighbours. The default.
+  /// with fewer than five neighbours, and to `log_heat_quadratic_fit` at
+  /// time factors below 4, where the heat varies too fast across the
+  /// two-ring (`Heat_exponential_map::angle_estimator()` tells). The default.
   heat_quadratic_fit
 };
 

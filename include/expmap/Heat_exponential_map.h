@@ -176,6 +176,16 @@ class Heat_exponential_map {
   }
   std::size_t number_of_vertices() const { return m_indexed.number_of_vertices(); }
   const Heat_options& options() const { return m_options; }
+  /// The estimator the queries use: `options().angle_estimator`, except
+  /// that `heat_quadratic_fit` at a time factor below
+  /// `min_time_factor_of_two_ring_fit` becomes `log_heat_quadratic_fit`.
+  Angle_estimator angle_estimator() const { return m_angle_estimator; }
+
+  /// Below this time factor the heat falls by more than a factor e across
+  /// the two-ring (its log-gradient is about 1 / sqrt(t), the two-ring's
+  /// radius 2h), beyond what `heat_quadratic_fit`'s cubic correction models
+  /// (measured at m = 1: mean angle errors of 0.02-0.5 rad on spheres).
+  static constexpr double min_time_factor_of_two_ring_fit = 4.0;
 
  private:
   struct Workspace {
@@ -240,6 +250,10 @@ class Heat_exponential_map {
     m_time_step = m_options.time_factor * h2;
     m_distance_time_step = m_options.distance_time_factor.value_or(m_options.time_factor) * h2;
     m_separate_distance_heat = m_distance_time_step != m_time_step;
+    m_angle_estimator = m_options.angle_estimator;
+    if (m_angle_estimator == Angle_estimator::heat_quadratic_fit &&
+        m_options.time_factor < min_time_factor_of_two_ring_fit)
+      m_angle_estimator = Angle_estimator::log_heat_quadratic_fit;
 
     std::vector<int> isolated;
     for (std::size_t v = 0; v < m_indexed.arrays.number_of_vertices(); ++v)
@@ -304,8 +318,8 @@ class Heat_exponential_map {
   // The linear map from heat values on the star of s to their gradient at
   // s, for the chosen angle estimator.
   internal::Star_gradient source_star_gradient(int s, const internal::Tangent_frame& frame) const {
-    if (m_options.angle_estimator == Angle_estimator::log_heat_quadratic_fit ||
-        m_options.angle_estimator == Angle_estimator::heat_quadratic_fit) {
+    if (m_angle_estimator == Angle_estimator::log_heat_quadratic_fit ||
+        m_angle_estimator == Angle_estimator::heat_quadratic_fit) {
       // Fitted on the triangulation the heat lives on: after intrinsic
       // Delaunay flips the input one-ring may hold slivers whose far corners
       // the heat never diffused along. The linear fit costs two columns
@@ -316,7 +330,7 @@ class Heat_exponential_map {
       internal::Star_gradient star;
       star.vertices = internal::ring_neighborhood(
           m_heat_neighbors, s,
-          m_options.angle_estimator == Angle_estimator::heat_quadratic_fit ? 2 : 1);
+          m_angle_estimator == Angle_estimator::heat_quadratic_fit ? 2 : 1);
       if (auto fitted = internal::quadratic_fit_star_gradient(m_indexed.arrays, std::move(star), frame))
         return *fitted;
     }
@@ -324,7 +338,7 @@ class Heat_exponential_map {
   }
   // Columns of the star solve: 2 for a linear estimator, else one per star vertex.
   std::size_t star_columns(const internal::Star_gradient& star) const {
-    if (!is_linear_in_heat(m_options.angle_estimator)) return star.vertices.size();
+    if (!is_linear_in_heat(m_angle_estimator)) return star.vertices.size();
     return m_separate_distance_heat ? 3 : 2;
   }
   // Direction of the geodesic from s to patch vertex v at heat distance r,
@@ -351,6 +365,7 @@ class Heat_exponential_map {
   std::vector<char> m_is_pinned;  // one vertex per component in the Poisson system
   double m_time_step = 0, m_distance_time_step = 0;
   bool m_separate_distance_heat = false;
+  Angle_estimator m_angle_estimator = Angle_estimator::heat_quadratic_fit;  // see angle_estimator()
   internal::Localized_cholesky_solver m_heat_local, m_distance_heat_local, m_poisson_local;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
@@ -457,7 +472,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
   // one column per star vertex.
   const std::size_t width = star_columns(star);
   ws.rhs.clear();
-  if (is_linear_in_heat(m_options.angle_estimator)) {
+  if (is_linear_in_heat(m_angle_estimator)) {
     for (std::size_t c = 0; c < star.vertices.size(); ++c) {
       ws.rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
       ws.rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
@@ -611,7 +626,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     // The heat from v at the source: its own column for a logarithmic
     // estimator, the source heat of the distance step (or, where that has
     // another time, the third column of the star solve) otherwise.
-    const double at_source = !is_linear_in_heat(m_options.angle_estimator) ? h[0]
+    const double at_source = !is_linear_in_heat(m_angle_estimator) ? h[0]
                              : m_separate_distance_heat                     ? h[2]
                                                                             : ws.region_heat[i];
     if (!(std::abs(at_source) > std::numeric_limits<double>::min()))
@@ -638,9 +653,9 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
   // Step 3 of the paper: the direction of the geodesic to v is the gradient
   // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
   std::array<double, 2> g;
-  if (is_linear_in_heat(m_options.angle_estimator)) {
+  if (is_linear_in_heat(m_angle_estimator)) {
     g = {{h[0], h[1]}};  // the solve applied the gradient weights already
-    if (m_options.angle_estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
+    if (m_angle_estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
       g = internal::remove_cubic_leak(star, {{g[0] / at_source, g[1] / at_source}},
                                       std::max(r, m_indexed.arrays.mean_edge_length), m_time_step);
   } else {

@@ -275,4 +275,24 @@ BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
   BOOST_TEST(defaults.mean < 0.7 * before.mean);
 }
 
+// Below time factor 4 the default takes the logarithmic fit (the heat
+// falls too fast across the two-ring for the linear one), and its angles
+// stay accurate there (mean angle error on the regular sphere at m = 1).
+BOOST_AUTO_TEST_CASE(small_time_factors_take_the_logarithmic_fit) {
+  const expmap::Triangle_soup regular = expmap::make_icosphere(5, 1.0);
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(regular, mesh);
+  expmap::Heat_options options;
+  options.time_factor = 1;
+  BOOST_TEST(to_string(expmap::Heat_exponential_map<Surface_mesh>(mesh, options).angle_estimator()) ==
+             "log-heat-quadratic-fit");
+  options.time_factor = 4;
+  BOOST_TEST(to_string(expmap::Heat_exponential_map<Surface_mesh>(mesh, options).angle_estimator()) ==
+             "heat-quadratic-fit");
+  options.time_factor = 1;
+  const double error = sphere_angle_errors(regular, options).mean;
+  BOOST_TEST_MESSAGE("regular sphere, m = 1, defaults: mean angle error " << error);
+  BOOST_TEST(error < 1e-2);
+}
+
 BOOST_AUTO_TEST_SUITE_END()
