@@ -103,7 +103,7 @@ class Localized_cholesky_solver {
     for (const auto& sn : m_factor.supernode)
       for (int c = 0; c < sn.ncol; ++c)
         m_inverse_diagonal[sn.first_column + c] =
-            1.0 / m_factor.value[sn.diagonal + static_cast<std::size_t>(c) * sn.ncol + c];
+            1.0 / m_factor.value[sn.diagonal + Supernodal_factor::triangle_row(c) + c];
     compute_tree_height();
   }
 
@@ -312,7 +312,7 @@ class Localized_cholesky_solver {
     const double* diagonal = F.value.data() + sn.diagonal;
     for (int r = first; r < sn.ncol; ++r) {
       double* yr = ys + r * W;
-      subtract_dot<W>(diagonal + static_cast<std::size_t>(r) * sn.ncol, ys, first, r, yr);
+      subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       for (int w = 0; w < W; ++w) yr[w] *= inverse;
     }
@@ -349,7 +349,7 @@ class Localized_cholesky_solver {
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       std::array<double, W> xr;
       for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
-      const double* l = diagonal + static_cast<std::size_t>(r) * sn.ncol;
+      const double* l = diagonal + Supernodal_factor::triangle_row(r);
       for (int a = first; a < r; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
     }
