@@ -76,6 +76,39 @@ BOOST_AUTO_TEST_CASE(pruned_solve_without_threshold_equals_full_solve) {
   check_against_full_solve<expmap::Eigen_simplicial_solver>(5, /*pruned=*/true);
 }
 
+// The heat and Poisson systems of a mesh share their sparsity, so the
+// second factorization can take the first one's ordering.
+BOOST_AUTO_TEST_CASE(cholmod_factor_with_a_given_ordering) {
+  const Matrix first = random_grid_operator(40, 30, 8, 1.0, 10.0);
+  const Matrix second = random_grid_operator(40, 30, 9);  // same pattern, other values
+  expmap::Cholmod_solver ordered;
+  ordered.factor(first);
+  const auto view = ordered.factor_view();
+  const std::vector<int> ordering(view.permutation, view.permutation + view.size);
+  expmap::Cholmod_solver solver;
+  solver.factor(second, ordering);
+  expmap::internal::Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+  const int n = static_cast<int>(second.rows());
+  std::vector<int> rows(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) rows[i] = i;
+  std::vector<double> out(rows.size());
+  const std::vector<expmap::internal::Rhs_entry> entries{{17, 0, 1.0}, {600, 0, -2.0}};
+  local.solve(entries, 1, rows.data(), rows.size(), out.data(), *ws);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  b[17] = 1.0;
+  b[600] = -2.0;
+  Eigen::SimplicialLDLT<Matrix> reference(second);  // independent of CHOLMOD
+  const Eigen::VectorXd x = reference.solve(b);
+  for (int i = 0; i < n; ++i) BOOST_TEST(std::abs(out[i] - x[i]) <= 1e-12 * x.cwiseAbs().maxCoeff());
+
+  std::vector<int> wrong = ordering;
+  wrong[3] = wrong[4];
+  BOOST_CHECK_THROW(solver.factor(second, wrong), std::runtime_error);
+  wrong.pop_back();
+  BOOST_CHECK_THROW(solver.factor(second, wrong), std::runtime_error);
+}
+
 BOOST_AUTO_TEST_CASE(localized_solve_touches_fewer_nodes_than_the_mesh) {
   const Matrix A = random_grid_operator(100, 100, 3);
   expmap::Cholmod_solver solver;

@@ -119,6 +119,11 @@ class Localized_cholesky_solver {
   /// Stored entries of the supernodal factor (dense blocks included).
   std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
 
+  /// The factor's ordering: `permutation()[k]` is the row of A that became
+  /// pivot k. A matrix with the same sparsity can be factored with it
+  /// (`Cholmod_solver::factor(A, ordering)`) without ordering it again.
+  const std::vector<int>& permutation() const { return m_factor.permutation; }
+
   /// Number of supernodes (dense column blocks) of the factor.
   std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
 
