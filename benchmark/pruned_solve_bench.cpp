@@ -7,13 +7,16 @@
 //
 //   expmap-pruned-bench --mesh FILE [--fractions LIST] [--sources N]
 //                       [--seed S] [--time-factor M] [--tolerances LIST]
+//                       [--protocol-tolerance T] [--hint-safety S] [--reuse-ordering]
 //
 // Precomputation: the steps of Heat_exponential_map's constructor with the
 // library's defaults (locality renumbering, intrinsic Delaunay, cotan
 // operators, heat system M + tL with t = M h^2, CHOLMOD, supernodal copy,
 // then the Poisson system with the heat copy held), each with its time and
 // the peak resident memory (VmHWM, reset before each step) and resident
-// memory after it.
+// memory after it. --reuse-ordering factors the Poisson system with the
+// heat factor's ordering (Cholmod_solver::factor(A, ordering)) instead of
+// ordering it with METIS again.
 //
 // Queries: --sources random sources (std::mt19937(seed) over the input's
 // vertex indices, as expmap-bench picks them); per fraction f the patch is
@@ -28,9 +31,14 @@
 // largest error over all sources of any returned value relative to itself
 // (rel) and relative to the largest value of its column (max-rel).
 // "query:" rows: solve_pruned_relative as a heat query would call it, with
-// --protocol-tolerance (1e-14): hints from the previous source (source on
-// candidates) and from that solve (star on patch), and how often the hint
-// was too large and the solve was repeated.
+// --protocol-tolerance (1e-14). Source on candidates: the hint is the
+// previous source's heat at its source times exp(its decay rate * this
+// query's candidate radius) times --hint-safety (1e-10; a hint too small
+// costs little, one too large a second solve); none for the first source.
+// Star on patch: 1e-3 times the smallest heat of that solve on the patch.
+// Also how often the hint was too large and the solve was repeated. "Poisson on region": the
+// unpruned Poisson solve of a query (right-hand side and rows on 2x the
+// patch), for scale.
 #include "Mesh_loading.h"
 #include "Peak_memory.h"
 #include "Sample_statistics.h"
@@ -71,6 +79,8 @@ struct Options {
   std::vector<double> fractions{0.001, 0.005, 0.01};
   std::vector<double> tolerances{1e-12, 1e-14, 1e-16};
   double protocol_tolerance = 1e-14;
+  double hint_safety = 1e-10;
+  bool reuse_ordering = false;
   std::size_t sources = 20;
   unsigned seed = 1;
   double time_factor = 10.0;
@@ -96,6 +106,8 @@ Options parse(int argc, char** argv) {
     else if (arg == "--fractions") o.fractions = parse_list(value());
     else if (arg == "--tolerances") o.tolerances = parse_list(value());
     else if (arg == "--protocol-tolerance") o.protocol_tolerance = std::stod(value());
+    else if (arg == "--hint-safety") o.hint_safety = std::stod(value());
+    else if (arg == "--reuse-ordering") o.reuse_ordering = true;
     else if (arg == "--sources") o.sources = std::stoul(value());
     else if (arg == "--seed") o.seed = static_cast<unsigned>(std::stoul(value()));
     else if (arg == "--time-factor") o.time_factor = std::stod(value());
@@ -123,10 +135,15 @@ class Phase_log {
 };
 
 // The factor of A in the form the localized solves traverse.
+// With an `ordering`, CHOLMOD takes it instead of ordering A with METIS.
 std::unique_ptr<Localized_cholesky_solver> factor(const expmap::internal::Sparse_matrix& A,
-                                                  const std::string& name, Phase_log& log) {
+                                                  const std::string& name, Phase_log& log,
+                                                  const std::vector<int>* ordering = nullptr) {
   expmap::Cholmod_solver solver;
-  solver.factor(A);
+  if (ordering)
+    solver.factor(A, *ordering);
+  else
+    solver.factor(A);
   log.done(name + ": CHOLMOD (" + std::to_string(solver.factor_nonzeros() / 1000000) + "M)");
   auto local = std::make_unique<Localized_cholesky_solver>(solver.factor_view());
   log.done(name + ": supernodal copy (" + std::to_string(local->number_of_entries() / 1000000) +
@@ -188,9 +205,10 @@ int main(int argc, char** argv) try {
   log.done("operators");
   const auto heat = factor(heat_matrix, "heat", log);
   expmap::internal::make_identity_row(L, {0});
-  const auto poisson = factor(L, "Poisson", log);
-  std::printf("  heat factor: tree height %d, %zu supernodes\n", heat->tree_height(),
-              heat->number_of_supernodes());
+  const auto poisson = factor(L, o.reuse_ordering ? "Poisson, heat ordering" : "Poisson", log,
+                              o.reuse_ordering ? &heat->permutation() : nullptr);
+  std::printf("  tree heights: heat %d, Poisson %d; %zu heat supernodes\n", heat->tree_height(),
+              poisson->tree_height(), heat->number_of_supernodes());
 
   // The sources as expmap-bench picks them (input indices, distinct).
   const std::size_t n = arrays.number_of_vertices();
@@ -205,6 +223,7 @@ int main(int argc, char** argv) try {
   }
 
   auto ws = heat->make_workspace();
+  auto poisson_ws = poisson->make_workspace();
   expmap::internal::Vertex_marks in_region, seen;
   in_region.resize(n);
   seen.resize(n);
@@ -215,9 +234,12 @@ int main(int argc, char** argv) try {
     const std::size_t patch = static_cast<std::size_t>(std::ceil(f * static_cast<double>(n)));
     const std::size_t candidates = static_cast<std::size_t>(std::ceil(2.6 * static_cast<double>(patch)));
     std::printf("  fraction %g: patch %zu, candidates %zu\n", f, patch, candidates);
-    Solve_record full_distance, full_star, protocol_distance, protocol_star;
+    Solve_record full_distance, full_star, protocol_distance, protocol_star, poisson_solve;
     int distance_retries = 0, star_retries = 0;
-    double distance_hint = 0;  // the previous source's smallest heat: none for the first
+    // The previous source's heat at the source and decay rate (log of the
+    // smallest over the largest heat per unit of graph distance): none for
+    // the first source.
+    double previous_at_source = 0, previous_rate = 0;
     std::vector<Solve_record> distance(o.tolerances.size()), star(o.tolerances.size());
     double smallest_ratio = 1;
     for (const int s : sources) {
@@ -264,12 +286,16 @@ int main(int argc, char** argv) try {
       const double tau = o.protocol_tolerance;
       std::vector<double> heat_values(rows[0]), star_values(rows[1] * width);
       Stopwatch watch;
+      const double radius = tentative[nearest.back()];  // graph distance of the farthest row
+      const double distance_hint =
+          o.hint_safety * previous_at_source * std::exp(previous_rate * radius);
       auto stats = heat->solve_pruned_relative(source_rhs, 1, nearest.data(), rows[0],
                                                heat_values.data(), *ws, tau, distance_hint);
       const double smallest_heat =
           Localized_cholesky_solver::smallest_magnitude(heat_values.data(), heat_values.size());
       distance_retries += tau * distance_hint > 2 * tau * smallest_heat;
-      distance_hint = smallest_heat;
+      previous_at_source = heat_values[0];
+      previous_rate = std::log(smallest_heat / heat_values[0]) / radius;
       const double star_hint =
           1e-3 * Localized_cholesky_solver::smallest_magnitude(heat_values.data(), rows[1]);
       protocol_distance.ms.push_back(watch.milliseconds());
@@ -282,6 +308,18 @@ int main(int argc, char** argv) try {
       star_retries += tau * star_hint >
                       2 * tau * Localized_cholesky_solver::smallest_magnitude(star_values.data(),
                                                                               star_values.size());
+      // The Poisson solve of the same query (not pruned: its solution does
+      // not decay), with a right-hand side on the whole region, the hottest
+      // 1/1.3 of the candidates (here the nearest): its cost depends only on
+      // where the right-hand side and the rows read are.
+      const std::size_t region = std::min(nearest.size(), 2 * patch);
+      std::vector<Rhs_entry> region_rhs;
+      for (std::size_t i = 0; i < region; ++i) region_rhs.push_back({nearest[i], 0, 1.0});
+      std::vector<double> potential(region);
+      watch.restart();
+      stats = poisson->solve(region_rhs, 1, nearest.data(), region, potential.data(), *poisson_ws);
+      poisson_solve.ms.push_back(watch.milliseconds());
+      poisson_solve.entries.push_back(static_cast<double>(stats.factor_entries));
       compare(heat_values, exact_of[0], 1, protocol_distance);
       compare(star_values, exact_of[1], width, protocol_star);
     }
@@ -294,6 +332,7 @@ int main(int argc, char** argv) try {
       print_row("star on patch", o.tolerances[k], star[k]);
     print_row("query: source", o.protocol_tolerance, protocol_distance);
     print_row("query: star", o.protocol_tolerance, protocol_star);
+    print_row("Poisson on region", 0, poisson_solve);
     std::printf("    query protocol re-solved: source %d, star %d of %zu\n", distance_retries,
                 star_retries, sources.size());
     std::fflush(stdout);
