@@ -36,9 +36,10 @@
 // query's candidate radius) times --hint-safety (1e-10; a hint too small
 // costs little, one too large a second solve); none for the first source.
 // Star on patch: 1e-3 times the smallest heat of that solve on the patch.
-// Also how often the hint was too large and the solve was repeated. "Poisson on region": the
-// unpruned Poisson solve of a query (right-hand side and rows on 2x the
-// patch), for scale.
+// Also how often the hint was too large and the solve was repeated.
+// "Poisson on region": the unpruned Poisson solve of a query (right-hand
+// side and rows on 2x the patch), for scale. Exits with status 1 if any
+// pruned value is off by more than 1e-10 relative to itself.
 #include "Mesh_loading.h"
 #include "Peak_memory.h"
 #include "Sample_statistics.h"
@@ -230,6 +231,7 @@ int main(int argc, char** argv) try {
   std::vector<double> tentative(n);
   std::vector<int> nearest;
   std::printf("heat solves (median over %zu sources; errors: worst over them):\n", o.sources);
+  double worst_relative = 0;  // of any pruned solve
   for (const double f : o.fractions) {
     const std::size_t patch = static_cast<std::size_t>(std::ceil(f * static_cast<double>(n)));
     const std::size_t candidates = static_cast<std::size_t>(std::ceil(2.6 * static_cast<double>(patch)));
@@ -336,6 +338,18 @@ int main(int argc, char** argv) try {
     std::printf("    query protocol re-solved: source %d, star %d of %zu\n", distance_retries,
                 star_retries, sources.size());
     std::fflush(stdout);
+    for (const Solve_record* r : {&protocol_distance, &protocol_star})
+      worst_relative = std::max(worst_relative, r->worst_relative);
+    for (const auto* records : {&distance, &star})
+      for (const Solve_record& r : *records) worst_relative = std::max(worst_relative, r.worst_relative);
+  }
+  // The bound doc/paper_scale.md states, checked (the ctest smoke run fails on it).
+  if (!(worst_relative <= 1e-10)) {
+    std::fprintf(stderr,
+                 "expmap-pruned-bench: error: a pruned heat value is off by %.1e relative to "
+                 "itself (the bound is 1e-10)\n",
+                 worst_relative);
+    return 1;
   }
   return 0;
 } catch (const std::exception& e) {
