@@ -5,9 +5,12 @@
 set -euo pipefail
 if [ "$(id -u)" -ne 0 ]; then exec sudo "$0" "$@"; fi
 export DEBIAN_FRONTEND=noninteractive
+# libopenblas0-pthread: CHOLMOD's supernodal factorization runs on the
+# machine's BLAS, which is Debian's reference BLAS unless an optimized one is
+# installed; OpenBLAS factors large meshes faster (doc/paper_scale.md).
 packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
-          libboost-graph-dev libboost-test-dev
+          libboost-graph-dev libboost-test-dev libopenblas0-pthread
           libopenmesh-dev
           "$@")
 missing=()
@@ -21,3 +24,14 @@ else
   # apt-get download (for the meshes) needs package lists too.
   [ -n "$(ls -A /var/lib/apt/lists 2>/dev/null | grep -v lock)" ] || apt-get update -q
 fi
+
+# Debian's alternatives choose the BLAS that libblas.so.3 loads: in automatic
+# mode (the default) the one of highest priority, OpenBLAS once installed.
+# A choice made by hand is kept, with a note.
+blas=$(update-alternatives --query "libblas.so.3-$(gcc -dumpmachine)" 2>/dev/null |
+       awk '/^Value:/ {print $2}')
+case "$blas" in
+  *openblas*|"") ;;
+  *) echo "note: libblas.so.3 is $blas, not OpenBLAS: CHOLMOD factors large meshes" \
+          "slower (update-alternatives --auto libblas.so.3-$(gcc -dumpmachine))" >&2 ;;
+esac

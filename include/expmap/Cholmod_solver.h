@@ -15,6 +15,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace expmap {
 
@@ -39,25 +40,39 @@ class Cholmod_solver {
 
   /// Factors `A` (only its lower triangle is read).
   /// \throws std::runtime_error if `A` is not square or not positive definite.
-  void factor(const Matrix& A) {
-    if (A.rows() != A.cols())
-      throw std::runtime_error("Cholmod_solver: the matrix is not square");
-    release();
-    Matrix lower = A.triangularView<Eigen::Lower>();
-    lower.makeCompressed();
-    cholmod_sparse view = sparse_view(lower);
-    m_factor = cholmod_analyze(&view, &m_common);
-    if (m_factor == nullptr) throw_status("symbolic analysis");
-    cholmod_factorize(&view, m_factor, &m_common);
-    if (m_common.status != CHOLMOD_OK || m_factor->minor < m_factor->n)
-      throw std::runtime_error(
-          "Cholmod_solver: the matrix is not positive definite (pivot " +
-          std::to_string(m_factor->minor) + " of " + std::to_string(m_factor->n) +
-          " failed); the mesh may have degenerate or disconnected parts");
-    if (!cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0,
-                               /*to_packed=*/1, /*to_monotonic=*/1, m_factor, &m_common))
-      throw_status("conversion to a simplicial factor");
+  void factor(const Matrix& A) { factor_with(A, nullptr); }
+
+  /// Factors `A` with a given fill-reducing ordering instead of METIS's:
+  /// `ordering[k]` is the row of A that becomes pivot k. Pass the
+  /// permutation of an earlier factor of a matrix with the same sparsity
+  /// (`factor_view().permutation`, e.g. the heat system's for the Poisson
+  /// system, whose pattern is the same or smaller): the METIS ordering is
+  /// most of the factorization's time on large meshes (18 s of 28 s of CPU
+  /// time on a 2.85M-vertex mesh, doc/paper_scale.md).
+  /// \throws std::runtime_error as `factor(A)`, or if `ordering` is not a
+  ///         permutation of 0..n-1.
+  ///
+  /// \code
+  /// expmap::Cholmod_solver heat, poisson;
+  /// heat.factor(heat_matrix);
+  /// const auto v = heat.factor_view();
+  /// poisson.factor(laplacian, std::vector<int>(v.permutation, v.permutation + v.size));
+  /// \endcode
+  void factor(const Matrix& A, const std::vector<int>& ordering) {
+    const std::size_t n = static_cast<std::size_t>(A.rows());
+    std::vector<char> seen(n, 0);
+    bool permutation = ordering.size() == n;
+    for (std::size_t k = 0; permutation && k < n; ++k) {
+      const int row = ordering[k];
+      permutation = row >= 0 && static_cast<std::size_t>(row) < n && !seen[row];
+      if (permutation) seen[row] = 1;
+    }
+    if (!permutation)
+      throw std::runtime_error("Cholmod_solver: the given ordering is not a permutation of the " +
+                               std::to_string(n) + " rows");
+    factor_with(A, ordering.data());
   }
+
 
   /// The factor, for localized solves. \pre `factor()` succeeded.
   Cholesky_factor_view factor_view() const {
@@ -98,6 +113,36 @@ class Cholmod_solver {
   }
 
  private:
+  void factor_with(const Matrix& A, const int* ordering) {
+    if (A.rows() != A.cols())
+      throw std::runtime_error("Cholmod_solver: the matrix is not square");
+    release();
+    Matrix lower = A.triangularView<Eigen::Lower>();
+    lower.makeCompressed();
+    cholmod_sparse view = sparse_view(lower);
+    if (ordering == nullptr) {
+      m_factor = cholmod_analyze(&view, &m_common);
+    } else {
+      // A given ordering is tried alone (and still postordered).
+      const int nmethods = m_common.nmethods, method = m_common.method[0].ordering;
+      m_common.nmethods = 1;
+      m_common.method[0].ordering = CHOLMOD_GIVEN;
+      m_factor = cholmod_analyze_p(&view, const_cast<int*>(ordering), nullptr, 0, &m_common);
+      m_common.nmethods = nmethods;
+      m_common.method[0].ordering = method;
+    }
+    if (m_factor == nullptr) throw_status("symbolic analysis");
+    cholmod_factorize(&view, m_factor, &m_common);
+    if (m_common.status != CHOLMOD_OK || m_factor->minor < m_factor->n)
+      throw std::runtime_error(
+          "Cholmod_solver: the matrix is not positive definite (pivot " +
+          std::to_string(m_factor->minor) + " of " + std::to_string(m_factor->n) +
+          " failed); the mesh may have degenerate or disconnected parts");
+    if (!cholmod_change_factor(CHOLMOD_REAL, /*to_ll=*/1, /*to_super=*/0,
+                               /*to_packed=*/1, /*to_monotonic=*/1, m_factor, &m_common))
+      throw_status("conversion to a simplicial factor");
+  }
+
   void configure() {
     // METIS nested dissection only: its balanced separators keep the
     // elimination tree shallow, which is what makes localized solves cheap.

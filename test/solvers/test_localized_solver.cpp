@@ -3,6 +3,8 @@
 #include <expmap/Eigen_simplicial_solver.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 
+#include "Random_grid_operator.h"
+
 #include <boost/test/unit_test.hpp>
 
 #include <Eigen/Sparse>
@@ -14,34 +16,13 @@ namespace {
 
 using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-// A screened graph Laplacian of an nx x ny grid with random positive edge
-// weights: symmetric positive definite, with the sparsity of a mesh.
-Matrix random_grid_operator(int nx, int ny, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> weight(0.1, 2.0);
-  std::vector<Eigen::Triplet<double>> t;
-  auto id = [nx](int x, int y) { return y * nx + x; };
-  auto edge = [&](int a, int b) {
-    const double w = weight(rng);
-    t.emplace_back(a, b, -w);
-    t.emplace_back(b, a, -w);
-    t.emplace_back(a, a, w);
-    t.emplace_back(b, b, w);
-  };
-  for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x) {
-      if (x + 1 < nx) edge(id(x, y), id(x + 1, y));
-      if (y + 1 < ny) edge(id(x, y), id(x, y + 1));
-      if (x + 1 < nx && y + 1 < ny) edge(id(x, y), id(x + 1, y + 1));
-      t.emplace_back(id(x, y), id(x, y), 0.01);
-    }
-  Matrix A(nx * ny, nx * ny);
-  A.setFromTriplets(t.begin(), t.end());
-  return A;
-}
+using expmap_test::random_grid_operator;
 
+// Solves random sparse blocks (widths 1 to 20, split above 16) and compares
+// every requested row with the solver model's own full solve; a pruned
+// solve with drop_below = 0 must give the same numbers.
 template <class Solver>
-void check_against_full_solve(unsigned seed) {
+void check_against_full_solve(unsigned seed, bool pruned = false) {
   const Matrix A = random_grid_operator(60, 50, seed);
   const int n = static_cast<int>(A.rows());
   Solver solver;
@@ -64,7 +45,9 @@ void check_against_full_solve(unsigned seed) {
       std::vector<int> rows;
       for (int k = 0; k < 200; ++k) rows.push_back(pick(rng));
       std::vector<double> out(rows.size() * width);
-      const auto stats = local.solve(entries, width, rows.data(), rows.size(), out.data(), *ws);
+      const auto stats =
+          pruned ? local.solve_pruned(entries, width, rows.data(), rows.size(), out.data(), *ws, 0.0)
+                 : local.solve(entries, width, rows.data(), rows.size(), out.data(), *ws);
       BOOST_TEST(stats.forward_nodes > 0u);
       for (int c = 0; c < width; ++c) {
         const Eigen::VectorXd x = solver.solve(B.col(c));
@@ -86,6 +69,44 @@ BOOST_AUTO_TEST_CASE(cholmod_localized_equals_full_solve) {
 
 BOOST_AUTO_TEST_CASE(eigen_localized_equals_full_solve) {
   check_against_full_solve<expmap::Eigen_simplicial_solver>(2);
+}
+
+BOOST_AUTO_TEST_CASE(pruned_solve_without_threshold_equals_full_solve) {
+  check_against_full_solve<expmap::Cholmod_solver>(4, /*pruned=*/true);
+  check_against_full_solve<expmap::Eigen_simplicial_solver>(5, /*pruned=*/true);
+}
+
+// The heat and Poisson systems of a mesh share their sparsity, so the
+// second factorization can take the first one's ordering.
+BOOST_AUTO_TEST_CASE(cholmod_factor_with_a_given_ordering) {
+  const Matrix first = random_grid_operator(40, 30, 8, 1.0, 10.0);
+  const Matrix second = random_grid_operator(40, 30, 9);  // same pattern, other values
+  expmap::Cholmod_solver ordered;
+  ordered.factor(first);
+  const auto view = ordered.factor_view();
+  const std::vector<int> ordering(view.permutation, view.permutation + view.size);
+  expmap::Cholmod_solver solver;
+  solver.factor(second, ordering);
+  expmap::internal::Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+  const int n = static_cast<int>(second.rows());
+  std::vector<int> rows(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) rows[i] = i;
+  std::vector<double> out(rows.size());
+  const std::vector<expmap::internal::Rhs_entry> entries{{17, 0, 1.0}, {600, 0, -2.0}};
+  local.solve(entries, 1, rows.data(), rows.size(), out.data(), *ws);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
+  b[17] = 1.0;
+  b[600] = -2.0;
+  Eigen::SimplicialLDLT<Matrix> reference(second);  // independent of CHOLMOD
+  const Eigen::VectorXd x = reference.solve(b);
+  for (int i = 0; i < n; ++i) BOOST_TEST(std::abs(out[i] - x[i]) <= 1e-12 * x.cwiseAbs().maxCoeff());
+
+  std::vector<int> wrong = ordering;
+  wrong[3] = wrong[4];
+  BOOST_CHECK_THROW(solver.factor(second, wrong), std::runtime_error);
+  wrong.pop_back();
+  BOOST_CHECK_THROW(solver.factor(second, wrong), std::runtime_error);
 }
 
 BOOST_AUTO_TEST_CASE(localized_solve_touches_fewer_nodes_than_the_mesh) {

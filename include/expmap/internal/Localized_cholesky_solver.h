@@ -12,7 +12,9 @@
 #include <cassert>
 #include <chrono>
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -89,6 +91,7 @@ class Localized_cholesky_solver {
     std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
     std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
     std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
+    std::vector<int> m_kept;  // pruned solves: propagated columns or rows of a supernode
     std::uint32_t m_stamp = 0;
     int m_size = -1;
   };
@@ -103,7 +106,7 @@ class Localized_cholesky_solver {
     for (const auto& sn : m_factor.supernode)
       for (int c = 0; c < sn.ncol; ++c)
         m_inverse_diagonal[sn.first_column + c] =
-            1.0 / m_factor.value[sn.diagonal + static_cast<std::size_t>(c) * sn.ncol + c];
+            1.0 / m_factor.value[sn.diagonal + Supernodal_factor::triangle_row(c) + c];
     compute_tree_height();
   }
 
@@ -115,6 +118,11 @@ class Localized_cholesky_solver {
 
   /// Stored entries of the supernodal factor (dense blocks included).
   std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
+
+  /// The factor's ordering: `permutation()[k]` is the row of A that became
+  /// pivot k. A matrix with the same sparsity can be factored with it
+  /// (`Cholmod_solver::factor(A, ordering)`) without ordering it again.
+  const std::vector<int>& permutation() const { return m_factor.permutation; }
 
   /// Number of supernodes (dense column blocks) of the factor.
   std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
@@ -133,6 +141,92 @@ class Localized_cholesky_solver {
   Solve_statistics solve(const std::vector<Rhs_entry>& entries, int width,
                          const int* rows, std::size_t row_count, double* out,
                          Workspace& ws) const {
+    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{});
+  }
+
+  /// As `solve()`, but an entry of the forward solution y (L y = P b) or of
+  /// the back solution x whose magnitude is at most `drop_below` in every
+  /// column of the block is not propagated: the entries it would update
+  /// are computed as if it were zero (its own value is still computed and
+  /// returned if requested). With `drop_below = 0` only exact zeros are
+  /// skipped and the result equals `solve()`'s.
+  ///
+  /// Why it pays: the dense separators at the top of the elimination tree
+  /// span the whole mesh, and every solve walks them; but the solution of a
+  /// well-conditioned system such as the heat system M + tL (and the
+  /// forward solution y with it) decays exponentially with the distance from
+  /// the right-hand side, so on most of a separator's columns it is far
+  /// below anything the caller reads, and the work of those columns
+  /// (a column of L each) is skipped.
+  ///
+  /// Choosing `drop_below`: an entry below the threshold changes the
+  /// returned values by about itself times the entries of L^-1 (at most
+  /// about 1 relative for the heat system, whose inverse factor is
+  /// nonnegative and diagonally dominated). To keep every returned value
+  /// accurate to a relative tolerance tau, pass tau times the smallest
+  /// magnitude among the requested rows (or a lower bound of it, e.g. from a
+  /// previous solve); `smallest_magnitude()` then checks the choice: the
+  /// pruning was consistent if drop_below <= tau * smallest_magnitude(out)
+  /// up to rounding (the pruned values are within tau of the full ones).
+  /// Systems whose solution does not decay (the Poisson system of the
+  /// distance step) gain nothing.
+  /// \pre drop_below >= 0 and finite.
+  Solve_statistics solve_pruned(const std::vector<Rhs_entry>& entries, int width,
+                                const int* rows, std::size_t row_count, double* out,
+                                Workspace& ws, double drop_below) const {
+    if (!(drop_below >= 0) || !std::isfinite(drop_below))
+      throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
+    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
+  }
+
+  /// A pruned solve that keeps every returned value accurate relative to
+  /// itself: `solve_pruned()` with drop_below = tolerance * smallest_hint,
+  /// `smallest_hint` a guess of the smallest magnitude this solve returns
+  /// (from an earlier solve; 0 for none, which solves without pruning). If
+  /// the guess was too large (drop_below > 2 * tolerance * the smallest
+  /// value returned), solves again with drop_below = tolerance * that value,
+  /// which can only be smaller than the true smallest one (pruning
+  /// lowers the values of a nonnegative inverse). Measured on the heat
+  /// system of a 2.85M-vertex mesh, tolerance 1e-16 keeps every value to
+  /// 3e-15 relative and 1e-12 does too (doc/paper_scale.md).
+  /// \returns the statistics of both solves if it solved twice; `out` holds
+  ///          the last one.
+  /// \pre tolerance and smallest_hint >= 0 and finite.
+  Solve_statistics solve_pruned_relative(const std::vector<Rhs_entry>& entries, int width,
+                                         const int* rows, std::size_t row_count, double* out,
+                                         Workspace& ws, double tolerance,
+                                         double smallest_hint) const {
+    if (!(tolerance >= 0) || !std::isfinite(tolerance) || !(smallest_hint >= 0) ||
+        !std::isfinite(smallest_hint))
+      throw std::invalid_argument(
+          "Localized_cholesky_solver: tolerance and smallest_hint must be >= 0 and finite");
+    const double drop_below = tolerance * smallest_hint;
+    Solve_statistics stats = solve_pruned(entries, width, rows, row_count, out, ws, drop_below);
+    const double smallest =
+        smallest_magnitude(out, row_count * static_cast<std::size_t>(width));
+    if (drop_below > 2 * tolerance * smallest)  // 2: room for rounding in `smallest`
+      stats += solve_pruned(entries, width, rows, row_count, out, ws, tolerance * smallest);
+    return stats;
+  }
+
+  /// Smallest |value| among `count` values (infinity if there are none): the
+  /// scale a pruned solve's `drop_below` is checked against.
+  static double smallest_magnitude(const double* values, std::size_t count) {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < count; ++i) smallest = std::min(smallest, std::abs(values[i]));
+    return smallest;
+  }
+
+ private:
+  // Whether and below what magnitude a solve stops propagating entries.
+  struct Pruning {
+    bool enabled = false;
+    double drop_below = 0;
+  };
+
+  Solve_statistics solve_in_blocks(const std::vector<Rhs_entry>& entries, int width,
+                                   const int* rows, std::size_t row_count, double* out,
+                                   Workspace& ws, Pruning pruning) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
     const auto start = std::chrono::steady_clock::now();
     if (!ws.fits(m_factor.size, number_of_supernodes()))
@@ -155,7 +249,7 @@ class Localized_cholesky_solver {
         chunk_out.assign(row_count * static_cast<std::size_t>(w), 0.0);
         target = chunk_out.data();
       }
-      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws);
+      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, pruning);
       total += s;
       if (width > max_block_width)
         for (std::size_t i = 0; i < row_count; ++i)
@@ -167,14 +261,14 @@ class Localized_cholesky_solver {
     return total;
   }
 
- private:
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
-                            std::size_t row_count, double* out, Workspace& ws) const {
-    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws);
-    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, width);
-    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, width);
-    if (width <= 12) return solve_block<12>(entries, rows, row_count, out, ws, width);
-    return solve_block<16>(entries, rows, row_count, out, ws, width);
+                            std::size_t row_count, double* out, Workspace& ws,
+                            Pruning pruning) const {
+    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning);
+    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, width);
+    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, width);
+    if (width <= 12) return solve_block<12>(entries, rows, row_count, out, ws, pruning, width);
+    return solve_block<16>(entries, rows, row_count, out, ws, pruning, width);
   }
 
   // Builds a topological order (descendants before ancestors) of the
@@ -215,7 +309,7 @@ class Localized_cholesky_solver {
   template <int W>
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
-                               int width = W) const {
+                               Pruning pruning, int width = W) const {
     const auto& F = m_factor;
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
     auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
@@ -232,8 +326,13 @@ class Localized_cholesky_solver {
     for (const int k : ws.m_forward_nodes) {
       const auto& sn = F.supernode[k];
       const int first = ws.m_forward_entry[k];
-      forward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
+      if (pruning.enabled) {
+        stats.factor_entries += forward_supernode_pruned<W>(sn, first, row_of(sn.first_column), y,
+                                                            pruning.drop_below, ws.m_kept);
+        continue;
+      }
+      forward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.factor_entries += entries_of(sn, first);
     }
 
@@ -243,8 +342,13 @@ class Localized_cholesky_solver {
     for (auto it = ws.m_backward_nodes.rbegin(); it != ws.m_backward_nodes.rend(); ++it) {
       const auto& sn = F.supernode[*it];
       const int first = ws.m_backward_entry[*it];
-      backward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
+      if (pruning.enabled) {
+        stats.factor_entries += backward_supernode_pruned<W>(sn, first, row_of(sn.first_column),
+                                                             y, pruning.drop_below, ws.m_kept);
+        continue;
+      }
+      backward_supernode<W>(sn, first, row_of(sn.first_column), y);
       stats.factor_entries += entries_of(sn, first);
     }
 
@@ -312,7 +416,7 @@ class Localized_cholesky_solver {
     const double* diagonal = F.value.data() + sn.diagonal;
     for (int r = first; r < sn.ncol; ++r) {
       double* yr = ys + r * W;
-      subtract_dot<W>(diagonal + static_cast<std::size_t>(r) * sn.ncol, ys, first, r, yr);
+      subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       for (int w = 0; w < W; ++w) yr[w] *= inverse;
     }
@@ -331,28 +435,127 @@ class Localized_cholesky_solver {
   void backward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
                           const double* y) const {
     const auto& F = m_factor;
-    const double* below = F.value.data() + sn.below;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    // The rows below, a few columns at a time with their sums in registers:
-    // updating ys in memory once per row below would chain every update of
-    // a column through a store and a load, which is what a narrow supernode
-    // (most of the tree) would otherwise cost.
-    constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
-    int c = first;
-    for (; c + block <= sn.ncol; c += block)
-      subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-    for (; c < sn.ncol; ++c)
-      subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+    backward_below<W>(sn, first, ys, y);
     const double* diagonal = F.value.data() + sn.diagonal;
     for (int r = sn.ncol - 1; r >= first; --r) {
       double* yr = ys + r * W;
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       std::array<double, W> xr;
       for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
-      const double* l = diagonal + static_cast<std::size_t>(r) * sn.ncol;
+      const double* l = diagonal + Supernodal_factor::triangle_row(r);
       for (int a = first; a < r; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
     }
+  }
+
+  // Whether a row of the block is propagated by a pruned solve.
+  template <int W>
+  static bool above(const double* row, double drop_below) {
+    for (int w = 0; w < W; ++w)
+      if (std::abs(row[w]) > drop_below) return true;
+    return false;
+  }
+
+  // forward_supernode for a pruned solve: only the columns whose solved
+  // rows are above `drop_below` are propagated, to the later rows of the
+  // diagonal block and to the rows below. They are kept in `runs` as
+  // [begin, end) pairs (flattened): in a separator the columns near the
+  // right-hand side tend to be consecutive, so a dot product over a run is
+  // as contiguous as the unpruned one. Returns the factor entries read.
+  template <int W>
+  std::size_t forward_supernode_pruned(const Supernodal_factor::Supernode& sn, int first,
+                                       double* ys, double* y, double drop_below,
+                                       std::vector<int>& runs) const {
+    const auto& F = m_factor;
+    const double* diagonal = F.value.data() + sn.diagonal;
+    runs.clear();
+    std::size_t kept = 0, read = 0;
+    for (int r = first; r < sn.ncol; ++r) {
+      double* yr = ys + r * W;
+      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      for (std::size_t q = 0; q < runs.size(); q += 2)
+        subtract_dot<W>(l, ys, runs[q], runs[q + 1], yr);
+      read += kept + 1;
+      const double inverse = m_inverse_diagonal[sn.first_column + r];
+      for (int w = 0; w < W; ++w) yr[w] *= inverse;
+      if (!above<W>(yr, drop_below)) continue;
+      ++kept;
+      if (!runs.empty() && runs.back() == r)
+        runs.back() = r + 1;
+      else
+        runs.insert(runs.end(), {r, r + 1});
+    }
+    if (runs.empty()) return read;
+    const double* below = F.value.data() + sn.below;
+    const int* below_rows = F.row_index.data() + sn.below_rows;
+    for (int t = 0; t < sn.nbelow; ++t) {
+      const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
+      double* target = y + static_cast<std::size_t>(below_rows[t]) * W;
+      for (std::size_t q = 0; q < runs.size(); q += 2)
+        subtract_dot<W>(l, ys, runs[q], runs[q + 1], target);
+    }
+    return read + kept * static_cast<std::size_t>(sn.nbelow);
+  }
+
+  // backward_supernode for a pruned solve: only the rows below (solved
+  // ancestors) and the rows of the diagonal block whose solutions are above
+  // `drop_below` are subtracted, each a contiguous row of L times its
+  // solution. `kept` receives the rows below that are. Returns the factor
+  // entries read.
+  template <int W>
+  std::size_t backward_supernode_pruned(const Supernodal_factor::Supernode& sn, int first,
+                                        double* ys, const double* y, double drop_below,
+                                        std::vector<int>& kept) const {
+    const auto& F = m_factor;
+    const double* below = F.value.data() + sn.below;
+    const int* below_rows = F.row_index.data() + sn.below_rows;
+    kept.clear();
+    for (int t = 0; t < sn.nbelow; ++t)
+      if (above<W>(y + static_cast<std::size_t>(below_rows[t]) * W, drop_below)) kept.push_back(t);
+    const std::size_t width = static_cast<std::size_t>(sn.ncol - first);
+    std::size_t read = kept.size() * width;
+    if (static_cast<int>(kept.size()) == sn.nbelow) {
+      // Nothing to skip below: the register-blocked kernel of the full solve.
+      backward_below<W>(sn, first, ys, y);
+    } else {
+      for (const int t : kept) {
+        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
+        const double* xt = y + static_cast<std::size_t>(below_rows[t]) * W;
+        for (int c = first; c < sn.ncol; ++c)
+          for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * xt[w];
+      }
+    }
+    const double* diagonal = F.value.data() + sn.diagonal;
+    for (int r = sn.ncol - 1; r >= first; --r) {
+      double* yr = ys + r * W;
+      const double inverse = m_inverse_diagonal[sn.first_column + r];
+      for (int w = 0; w < W; ++w) yr[w] *= inverse;
+      ++read;
+      if (!above<W>(yr, drop_below)) continue;
+      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      for (int a = first; a < r; ++a)
+        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * yr[w];
+      read += static_cast<std::size_t>(r - first);
+    }
+    return read;
+  }
+
+  // The rows below a supernode (solved ancestors) subtracted from its rows
+  // from `first` on, a few columns at a time with their sums in registers:
+  // updating ys in memory once per row below would chain every update of a
+  // column through a store and a load, which is what a narrow supernode
+  // (most of the tree) would otherwise cost.
+  template <int W>
+  void backward_below(const Supernodal_factor::Supernode& sn, int first, double* ys,
+                      const double* y) const {
+    const double* below = m_factor.value.data() + sn.below;
+    const int* below_rows = m_factor.row_index.data() + sn.below_rows;
+    constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
+    int c = first;
+    for (; c + block <= sn.ncol; c += block)
+      subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+    for (; c < sn.ncol; ++c)
+      subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
   }
 
   // Entries of the supernode's columns from `first` on.

@@ -19,7 +19,8 @@ namespace internal {
 /// parent in the elimination tree is the next one and their row patterns
 /// below the run coincide. Each supernode is stored densely:
 ///
-/// - the diagonal block (ncol x ncol, lower triangle, row-major), and
+/// - the diagonal block (its lower triangle, packed row-major: row r holds
+///   columns 0..r and starts at offset r (r + 1) / 2), and
 /// - the rows below it (nbelow x ncol, row-major) with their row indices.
 ///
 /// Triangular solves then work on small dense blocks instead of scattering
@@ -50,6 +51,11 @@ struct Supernodal_factor {
   std::vector<int> inverse_permutation;  // row of A -> pivot
 
   std::size_t number_of_entries() const { return value.size(); }
+
+  /// Offset of row r of a packed lower-triangular diagonal block.
+  static std::size_t triangle_row(int r) {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2;
+  }
 };
 
 /// Regroups the factor of `view` into fundamental supernodes.
@@ -81,19 +87,37 @@ inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view
     return std::sqrt(view.diagonal[j]);
   };
 
-  f.supernode_of_column.assign(static_cast<std::size_t>(n), -1);
-  std::vector<std::pair<int, double>> column;
+  // The supernodes' column ranges and the exact sizes of the arrays first:
+  // growing `value` by doubling would hold up to three times the factor
+  // (old and new buffer) at once, the peak of the whole precomputation on
+  // large meshes.
+  std::vector<int> supernode_end;
+  std::size_t values = 0, rows_below = 0;
   for (int j = 0; j < n;) {
     int end = j + 1;
     while (end < n && parent[end - 1] == end && count[end - 1] == count[end] + 1) ++end;
+    const std::size_t ncol = static_cast<std::size_t>(end - j), nbelow = count[end - 1];
+    values += Supernodal_factor::triangle_row(end - j) + nbelow * ncol;
+    rows_below += nbelow;
+    supernode_end.push_back(end);
+    j = end;
+  }
+  f.value.assign(values, 0.0);
+  f.row_index.reserve(rows_below);
+  f.supernode.reserve(supernode_end.size());
+
+  f.supernode_of_column.assign(static_cast<std::size_t>(n), -1);
+  std::size_t next_value = 0;
+  for (int j = 0, k = 0; j < n; ++k) {
+    const int end = supernode_end[static_cast<std::size_t>(k)];
     Supernodal_factor::Supernode s;
     s.first_column = j;
     s.ncol = end - j;
     s.nbelow = count[end - 1];
-    s.diagonal = f.value.size();
-    s.below = s.diagonal + static_cast<std::size_t>(s.ncol) * s.ncol;
+    s.diagonal = next_value;
+    s.below = s.diagonal + Supernodal_factor::triangle_row(s.ncol);
     s.below_rows = f.row_index.size();
-    f.value.resize(s.below + static_cast<std::size_t>(s.nbelow) * s.ncol, 0.0);
+    next_value = s.below + static_cast<std::size_t>(s.nbelow) * s.ncol;
     // Rows below the run: the pattern of its last column.
     {
       const int last = end - 1;
@@ -106,12 +130,12 @@ inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view
       const int col = j + c;
       const double d = diagonal_of(col);
       const double scale = view.unit_diagonal ? d : 1.0;  // LDL^T -> LL^T
-      f.value[s.diagonal + static_cast<std::size_t>(c) * s.ncol + c] = d;
+      f.value[s.diagonal + Supernodal_factor::triangle_row(c) + c] = d;
       for (int q = first[col]; q < view.column_start[col + 1]; ++q) {
         const int row = view.row_index[q];
         const double v = view.value[q] * scale;
         if (row < end) {
-          f.value[s.diagonal + static_cast<std::size_t>(row - j) * s.ncol + c] = v;
+          f.value[s.diagonal + Supernodal_factor::triangle_row(row - j) + c] = v;
         } else {
           const int t = static_cast<int>(std::lower_bound(below_rows, below_rows + s.nbelow, row) -
                                          below_rows);

@@ -1,0 +1,127 @@
+// A pruned localized solve of a heat system must keep every requested value
+// to 1e-10 relative (each value against itself, not against the largest),
+// and must actually skip work.
+#include <expmap/Cholmod_solver.h>
+#include <expmap/internal/Localized_cholesky_solver.h>
+
+#include "Random_grid_operator.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <vector>
+
+namespace {
+
+using expmap::internal::Localized_cholesky_solver;
+using expmap::internal::Rhs_entry;
+
+constexpr int side = 160;
+int grid_id(int x, int y) { return y * side + x; }
+
+// The heat from `centre` and its neighbours (one column each, as the angle
+// step of a query solves it) read on a disk around it, pruned with
+// drop_below = tolerance * (the smallest value on the disk) as the solver's
+// documentation advises, against CHOLMOD's full solves.
+void check_pruned_heat(double weight_scale, int cx, int cy, int radius) {
+  const auto A = expmap_test::random_grid_operator(side, side, 11, /*diagonal=*/1.0, weight_scale);
+  expmap::Cholmod_solver solver;
+  solver.factor(A);
+  const Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+
+  const std::vector<int> star{grid_id(cx, cy),     grid_id(cx + 1, cy),     grid_id(cx - 1, cy),
+                              grid_id(cx, cy + 1), grid_id(cx, cy - 1),     grid_id(cx + 1, cy + 1),
+                              grid_id(cx - 1, cy - 1)};
+  const int width = static_cast<int>(star.size());
+  std::vector<Rhs_entry> entries;
+  for (int c = 0; c < width; ++c) entries.push_back({star[c], c, 1.0});
+  std::vector<int> disk;
+  for (int y = cy - radius; y <= cy + radius; ++y)
+    for (int x = cx - radius; x <= cx + radius; ++x)
+      if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= radius * radius) disk.push_back(grid_id(x, y));
+
+  std::vector<double> full(disk.size() * width), pruned(disk.size() * width);
+  const auto full_stats = local.solve(entries, width, disk.data(), disk.size(), full.data(), *ws);
+  const double tolerance = 1e-12;
+  const double smallest = Localized_cholesky_solver::smallest_magnitude(full.data(), full.size());
+  BOOST_TEST_REQUIRE(smallest > 0.0);
+  const double drop_below = tolerance * smallest;
+  const auto pruned_stats = local.solve_pruned(entries, width, disk.data(), disk.size(),
+                                               pruned.data(), *ws, drop_below);
+  // The documented a posteriori check holds (the pruned values differ from
+  // the full ones by far less than 1%).
+  BOOST_TEST(drop_below <= 1.01 * tolerance * Localized_cholesky_solver::smallest_magnitude(
+                                                  pruned.data(), pruned.size()));
+
+  std::vector<Eigen::VectorXd> exact;  // CHOLMOD's own triangular solves
+  for (int c = 0; c < width; ++c) {
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(A.rows());
+    b[star[c]] = 1.0;
+    exact.push_back(solver.solve(b));
+  }
+  auto check = [&](const std::vector<double>& values, const char* what) {
+    for (int c = 0; c < width; ++c) {
+      double worst = 0;
+      for (std::size_t i = 0; i < disk.size(); ++i)
+        worst = std::max(worst, std::abs(values[i * width + c] - exact[c][disk[i]]) /
+                                    std::abs(exact[c][disk[i]]));
+      BOOST_TEST(worst <= 1e-10, what << ", column " << c << ": relative error " << worst);
+    }
+  };
+  check(pruned, "pruned");
+
+  // The self-checking variant, with a good hint, none, and one far too
+  // large (which must be caught and solved again).
+  const double largest = std::abs(*std::max_element(full.begin(), full.end(), [](double a, double b) {
+    return std::abs(a) < std::abs(b);
+  }));
+  for (const double hint : {smallest, 0.0, largest}) {
+    std::vector<double> relative(full.size());
+    const auto stats = local.solve_pruned_relative(entries, width, disk.data(), disk.size(),
+                                                   relative.data(), *ws, tolerance, hint);
+    check(relative, hint == 0.0 ? "no hint" : hint == smallest ? "good hint" : "hint too large");
+    if (hint == smallest) BOOST_TEST(stats.factor_entries == pruned_stats.factor_entries);
+    if (hint == 0.0) BOOST_TEST(stats.factor_entries <= full_stats.factor_entries);
+  }
+  BOOST_TEST(pruned_stats.factor_entries < full_stats.factor_entries);
+  BOOST_TEST_MESSAGE("pruned solve read " << pruned_stats.factor_entries << " of "
+                                          << full_stats.factor_entries << " factor entries");
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_SUITE(pruned_solver)
+
+// Fast decay (about 0.4 per grid step): most of the top separators is skipped.
+BOOST_AUTO_TEST_CASE(pruned_heat_is_accurate_relative_to_each_value) {
+  check_pruned_heat(1.0, 50, 70, 12);
+  check_pruned_heat(1.0, 120, 30, 20);
+}
+
+// Slow decay (about 0.75 per grid step, like t = 10 h^2 on a mesh): the
+// requested values span many orders of magnitude.
+BOOST_AUTO_TEST_CASE(pruned_slowly_decaying_heat_is_accurate) {
+  check_pruned_heat(10.0, 80, 80, 30);
+}
+
+BOOST_AUTO_TEST_CASE(pruned_solve_rejects_a_negative_threshold) {
+  const auto A = expmap_test::random_grid_operator(10, 10, 1);
+  expmap::Cholmod_solver solver;
+  solver.factor(A);
+  const Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+  std::vector<Rhs_entry> entries{{5, 0, 1.0}};
+  int row = 5;
+  double out = 0;
+  BOOST_CHECK_THROW(local.solve_pruned(entries, 1, &row, 1, &out, *ws, -1.0),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(local.solve_pruned(entries, 1, &row, 1, &out, *ws, std::nan("")),
+                    std::invalid_argument);
+}
+
+BOOST_AUTO_TEST_SUITE_END()
