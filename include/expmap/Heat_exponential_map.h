@@ -267,7 +267,7 @@ class Heat_exponential_map {
     };
     m_heat_local = factor_locally(heat_matrix(m_time_step));
     if (m_separate_distance_heat)
-      m_distance_heat_local = factor_locally(heat_matrix(m_distance_time_step));
+      m_distance_heat_local = factor_locally(heat_matrix(m_distance_time_step), &m_heat_local);
 
     // Identity rows need a zero right-hand side: isolated vertices get no
     // divergence anyway, and a pinned vertex's potential must stay 0.
@@ -285,15 +285,37 @@ class Heat_exponential_map {
       }
     }
     internal::make_identity_row(L, identity_rows);
-    m_poisson_local = factor_locally(L);
+    m_poisson_local = factor_locally(L, &m_heat_local);
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the
   // localized solves traverse (the model's own factor is released at once,
   // halving the memory held between queries).
-  static internal::Localized_cholesky_solver factor_locally(const internal::Sparse_matrix& A) {
-    Solver solver;
+  //
+  // `like` is an earlier factor of a matrix with the same (or a larger)
+  // sparsity pattern: the Poisson and distance-heat matrices have the heat
+  // matrix's pattern, so a solver model that accepts an ordering reuses the
+  // heat factor's instead of computing the same nested dissection again
+  // (METIS is most of a factorization's time on large meshes,
+  // doc/performance.md).
+  template <class Model = Solver>
+  static auto factor_with_ordering(Model& solver, const internal::Sparse_matrix& A,
+                                   const std::vector<int>& ordering, int)
+      -> decltype(solver.factor(A, ordering), void()) {
+    solver.factor(A, ordering);
+  }
+  template <class Model = Solver>
+  static void factor_with_ordering(Model& solver, const internal::Sparse_matrix& A,
+                                   const std::vector<int>&, long) {
     solver.factor(A);
+  }
+  static internal::Localized_cholesky_solver factor_locally(
+      const internal::Sparse_matrix& A, const internal::Localized_cholesky_solver* like = nullptr) {
+    Solver solver;
+    if (like)
+      factor_with_ordering(solver, A, like->permutation(), 0);
+    else
+      solver.factor(A);
     return internal::Localized_cholesky_solver(solver.factor_view());
   }
 
