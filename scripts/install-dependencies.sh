@@ -6,7 +6,8 @@ if [ "$(id -u)" -ne 0 ]; then exec sudo "$0" "$@"; fi
 export DEBIAN_FRONTEND=noninteractive
 packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
-          libboost-graph-dev libboost-test-dev)
+          libboost-graph-dev libboost-test-dev
+          python3-numpy)  # the test that loads `expmap batch` .npz output with NumPy
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
