@@ -95,7 +95,9 @@ class Discrete_exponential_map
 
   /// Built from a mesh `tm` and optionally its vertex point map `vpm`:
   /// `(tm)` or `(tm, vpm)`; copies the mesh and computes a tangent frame per
-  /// vertex. See `internal::Method_front`.
+  /// vertex.
+  /// \throws Invalid_input for meshes that cannot be used (empty, not
+  ///         triangulated, degenerate faces, non-finite coordinates).
   using Front::Front;
 
   /// Polar coordinates around the vertex of index `source` in

@@ -82,7 +82,9 @@ class Exact_exponential_map
   using typename Front::Result;
 
   /// Built from a mesh `tm` and optionally its vertex point map `vpm`:
-  /// `(tm)` or `(tm, vpm)`; see `internal::Method_front`.
+  /// `(tm)` or `(tm, vpm)`; copies the mesh.
+  /// \throws Invalid_input for meshes that cannot be used (empty, not
+  ///         triangulated, degenerate faces, non-finite coordinates).
   using Front::Front;
 
   /// Polar coordinates around the vertex of index `source` in
