@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # Installs what building and testing expmap needs, from Debian 12's archive.
-# Run as root (or through sudo).
+# Run as root (or through sudo). Arguments name optional extra packages
+# (scripts/build-docs.sh passes doxygen).
 set -euo pipefail
 if [ "$(id -u)" -ne 0 ]; then exec sudo "$0" "$@"; fi
 export DEBIAN_FRONTEND=noninteractive
 packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
           libboost-graph-dev libboost-test-dev
-          python3-numpy)  # the test that loads `expmap batch` .npz output with NumPy
+          libopenmesh-dev
+          python3-numpy  # the test that loads `expmap batch` .npz output with NumPy
+          "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -9,6 +9,8 @@
 /// more than it saves. Only syntax and value ranges are checked here; what
 /// needs the mesh (the source index) is checked after reading it.
 
+#include <expmap/Angle_estimator.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -47,9 +49,11 @@ struct Compute_arguments {
   std::string method = "heat";
   std::optional<double> time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
-  std::optional<std::string> angles;     // "area-weighted" or "quadratic-fit"
+  std::optional<expmap::Angle_estimator> angles;
+  std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<std::array<double, 3>> reference;
-  bool triangulate = false;
+  bool triangulate = true;  // --no-triangulate refuses polygonal faces instead
+  bool repair = false;
   std::vector<Output> outputs;
   bool help = false;
 };
@@ -226,18 +230,37 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
                           *a.laplacian + "')");
     } else if (name == "--angles") {
       once(a.angles.has_value());
-      a.angles = take_value();
-      if (*a.angles != "area-weighted" && *a.angles != "quadratic-fit")
-        throw Usage_error("--angles must be 'area-weighted' or 'quadratic-fit' (got '" +
-                          *a.angles + "')");
+      try {
+        a.angles = expmap::angle_estimator_from_string(take_value());
+      } catch (const expmap::Invalid_input& e) {
+        throw Usage_error(std::string("--angles: ") + e.what());
+      }
+    } else if (name == "--near-source-blend") {
+      once(a.near_source_blend.has_value());
+      const std::string text = take_value();
+      const std::string::size_type comma = text.find(',');
+      if (comma == std::string::npos)
+        throw Usage_error("--near-source-blend takes BEGIN,END in mean edge lengths (got '" +
+                          text + "')");
+      expmap::Near_source_blend blend;
+      blend.begin = parse_real(name, text.substr(0, comma));
+      blend.end = parse_real(name, text.substr(comma + 1));
+      if (!(blend.begin >= 0) || !(blend.end >= blend.begin))
+        throw Usage_error("--near-source-blend needs 0 <= BEGIN <= END (got '" + text + "')");
+      a.near_source_blend = blend;
     } else if (name == "--reference") {
       once(a.reference.has_value());
       a.reference = parse_vector(name, take_value());
       const auto& r = *a.reference;
       if (r[0] == 0 && r[1] == 0 && r[2] == 0) throw Usage_error("--reference must not be zero");
-    } else if (name == "--triangulate") {
-      if (inline_value) throw Usage_error("--triangulate takes no value");
-      a.triangulate = true;
+    } else if (name == "--triangulate" || name == "--no-triangulate" || name == "--repair") {
+      // --triangulate is the default; it is still accepted so that older
+      // command lines keep working.
+      if (inline_value) throw Usage_error(name + " takes no value");
+      if (name == "--repair")
+        a.repair = true;
+      else
+        a.triangulate = name == "--triangulate";
     } else if (name == "-o" || name == "--output") {
       const std::string path = take_value();
       a.outputs.push_back({path, output_format(path)});

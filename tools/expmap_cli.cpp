@@ -17,6 +17,7 @@
 #include <expmap/Fold_overs.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
+#include <expmap/IO/read_triangle_mesh.h>
 #include <expmap/IO/write_csv.h>
 #include <expmap/IO/write_svg.h>
 #include <expmap/IO/write_textured_obj.h>
@@ -24,9 +25,7 @@
 #include <expmap/Patch.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -90,10 +89,8 @@ expmap::Heat_options heat_options(const Compute_arguments& a) {
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
     options.laplacian = expmap::Laplacian_mode::direct;
-  if (a.angles == std::string("quadratic-fit"))
-    options.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
-  else if (a.angles == std::string("area-weighted"))
-    options.angle_estimator = expmap::Angle_estimator::log_heat_gradient;
+  if (a.angles) options.angle_estimator = *a.angles;
+  if (a.near_source_blend) options.near_source_blend = *a.near_source_blend;
   return options;
 }
 
@@ -121,10 +118,9 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   d << "heat method (time factor " << options.time_factor << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "intrinsic Delaunay")
     << " Laplacian, "
-    << (options.angle_estimator == expmap::Angle_estimator::log_heat_quadratic_fit
-            ? "quadratic-fit"
-            : "area-weighted")
-    << " angles)";
+    << expmap::to_string(options.angle_estimator) << " angles, chord directions to "
+    << options.near_source_blend.begin << " h, blended by " << options.near_source_blend.end
+    << " h)";
   return d.str();
 }
 
@@ -142,7 +138,11 @@ Run run_one(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index sou
 /// precomputation succeeded, and removed again if the batch does not finish.
 class Batch_output {
  public:
-  explicit Batch_output(const std::vector<expmap_cli::Output>& outputs) : m_outputs(outputs) {}
+  // `file_index` as in Mesh_reading_report: the outputs speak of the file's
+  // vertices, not the mesh's.
+  Batch_output(const std::vector<expmap_cli::Output>& outputs,
+               const std::vector<std::size_t>& file_index)
+      : m_outputs(outputs), m_file_index(file_index) {}
   Batch_output(const Batch_output&) = delete;
   Batch_output& operator=(const Batch_output&) = delete;
   ~Batch_output() {
@@ -152,7 +152,10 @@ class Batch_output {
     for (const auto& output : m_outputs) std::filesystem::remove(output.path, ignored);
   }
 
-  void write(const expmap_cli::Batch_table& chunk) {
+  // `chunk` numbers vertices as the mesh does.
+  void write(expmap_cli::Batch_table chunk) {
+    for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
+    for (std::int64_t& v : chunk.vertex) v = static_cast<std::int64_t>(m_file_index[v]);
     if (!m_opened) open_csv();
     for (std::ofstream& out : m_csv) expmap_cli::write_csv_rows(out, chunk);
     if (has(expmap_cli::Output_format::npz)) m_table.append(chunk);
@@ -192,6 +195,7 @@ class Batch_output {
   }
 
   std::vector<expmap_cli::Output> m_outputs;
+  const std::vector<std::size_t>& m_file_index;
   std::vector<std::ofstream> m_csv;
   expmap_cli::Batch_table m_table;
   bool m_opened = false, m_finished = false;
@@ -328,24 +332,37 @@ std::string map_options_help() {
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
        "  --angles A           heat only: how the angle is read off the heat at the\n"
-       "                       source's one-ring: area-weighted (the paper's gradient,\n"
-       "                       of log h; smoothest maps) | quadratic-fit (least-squares\n"
-       "                       quadratic; more accurate on irregular meshes)\n"
-       "                       (default: area-weighted)\n"
+       "                       source's one-ring: heat-quadratic-fit (least-squares\n"
+       "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
+       "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
+       "                       log-heat-quadratic-fit (of log h; one solve per\n"
+       "                       neighbour) (default: heat-quadratic-fit)\n"
+       "  --near-source-blend B,E  heat only: chord directions up to B mean edge\n"
+       "                       lengths from the source, heat directions from E on,\n"
+       "                       blended between; 0,0 for pure heat angles (default: 2,6)\n"
        "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"
-       "input:\n"
-       "  --triangulate        split polygonal faces into triangles first (no vertex\n"
-       "                       is added, so indices keep file order); without it a\n"
-       "                       mesh with polygons is an error (default: off)\n";
+       "input (what is repaired is said on stderr as 'expmap: note: ...'):\n"
+       "                       The counts a file declares are checked against its\n"
+       "                       size first. Faces that are not an oriented 2-manifold\n"
+       "                       (random orientation, duplicates, non-manifold\n"
+       "                       vertices) are read as a polygon soup and oriented.\n"
+       "  --no-triangulate     refuse faces with more than three vertices instead of\n"
+       "                       splitting them into triangles (the default, which adds\n"
+       "                       no vertex, so indices keep file order; --triangulate\n"
+       "                       asks for the default explicitly)\n"
+       "  --repair             remove degenerate faces (zero area), needles and caps\n"
+       "                       by collapsing and flipping edges; vertex indices in the\n"
+       "                       output stay those of the file\n";
   return h.str();
 }
 
 std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
          "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
-         "                      [--reference X,Y,Z] [--triangulate] -o OUT [-o OUT ...]\n"
+         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
+         "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
          "  --source V           source vertex, 0-based index in file order (required;\n"
@@ -368,8 +385,9 @@ std::string compute_help() {
 std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--laplacian L] [--angles A] [--reference X,Y,Z]\n"
-         "                    [--triangulate] -o OUT [-o OUT ...]\n"
+         "                    [--laplacian L] [--angles A] [--near-source-blend B,E]\n"
+         "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+         "                    -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
          "  --sources S          the source vertices, 0-based indices in file order\n"
@@ -396,20 +414,60 @@ std::string batch_help() {
          "output is left behind.\n";
 }
 
-Mesh read_mesh(const Compute_arguments& a) {
+// The mesh as the methods need it, and where its vertices are in the file.
+struct Input {
+  Mesh mesh;
+  expmap::IO::Mesh_reading_report report;
+};
+
+Input read_mesh(const Compute_arguments& a) {
   if (!std::ifstream(a.mesh))
     throw Runtime_error("cannot open mesh file '" + a.mesh + "' (missing or not readable)");
-  Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(a.mesh, mesh))
-    throw Runtime_error("cannot read '" + a.mesh +
-                        "' as a polygon mesh: the format is not .off, .obj, .ply or .stl, the "
-                        "file is malformed, or its faces do not form a consistently oriented "
-                        "2-manifold mesh");
-  if (a.triangulate && !CGAL::is_triangle_mesh(mesh) &&
-      !CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-    throw Runtime_error("--triangulate could not split every face of '" + a.mesh +
-                        "' into triangles");
-  return mesh;
+  Input input;
+  expmap::IO::Mesh_reading_options options;
+  options.triangulate = a.triangulate;
+  options.repair = a.repair;
+  input.report = expmap::IO::read_triangle_mesh(a.mesh, input.mesh, options);
+  if (!input.report.notes.empty()) {
+    std::string note;
+    for (const std::string& n : input.report.notes) note += (note.empty() ? "" : "; ") + n;
+    std::fflush(stdout);
+    std::cerr << "expmap: note: '" << a.mesh << "': " << note << "\n";
+  }
+  if (!CGAL::is_triangle_mesh(input.mesh)) {
+    std::size_t polygons = 0;
+    for (auto f : input.mesh.faces()) polygons += input.mesh.degree(f) > 3;
+    throw Runtime_error("'" + a.mesh + "' has " + std::to_string(polygons) +
+                        " faces with more than three vertices and --no-triangulate was given");
+  }
+  return input;
+}
+
+// For each vertex of the file, the mesh vertex standing for it (the first,
+// if a non-manifold vertex was split), or `removed_vertex` if --repair
+// removed it.
+constexpr std::size_t removed_vertex = static_cast<std::size_t>(-1);
+std::vector<std::size_t> mesh_vertex_of_file_vertex(const Input& input) {
+  std::vector<std::size_t> mesh_vertex(input.report.file_vertices, removed_vertex);
+  for (std::size_t i = input.report.file_index.size(); i-- > 0;)
+    mesh_vertex[input.report.file_index[i]] = i;
+  return mesh_vertex;
+}
+
+// The mesh vertex at position `index` of the file; `what` says where the
+// index came from ("--source").
+Mesh::Vertex_index find_file_vertex(const std::string& what, std::size_t index,
+                                    const std::vector<std::size_t>& mesh_vertex,
+                                    const Compute_arguments& a) {
+  if (index < mesh_vertex.size() && mesh_vertex[index] != removed_vertex)
+    return Mesh::Vertex_index(static_cast<Mesh::size_type>(mesh_vertex[index]));
+  const std::size_t n = mesh_vertex.size();
+  if (index < n)
+    throw Runtime_error(what + " " + std::to_string(index) +
+                        " was removed by --repair (it lay on a degenerate face); choose another");
+  throw Usage_error(what + " " + std::to_string(index) + " is out of range: '" + a.mesh + "' has " +
+                    std::to_string(n) + " vertices" +
+                    (n ? " (0 to " + std::to_string(n - 1) + ")" : ""));
 }
 
 expmap::Patch make_patch(const Compute_arguments& a) {
@@ -418,13 +476,17 @@ expmap::Patch make_patch(const Compute_arguments& a) {
   return expmap::Patch::vertex_count(*a.vertex_count);
 }
 
-void write_output(const expmap_cli::Output& output, const Mesh& mesh, const Run& run) {
+void write_output(const expmap_cli::Output& output, const Input& input, const Run& run) {
+  const Mesh& mesh = input.mesh;
   std::ofstream out(output.path);
   if (!out) throw Runtime_error("cannot create output file '" + output.path + "'");
   switch (output.format) {
-    case expmap_cli::Output_format::csv:
-      expmap::IO::write_local_map_csv(out, run.map);
+    case expmap_cli::Output_format::csv: {
+      Map in_file_order = run.map;  // --repair renumbers the mesh; the CSV speaks of the file
+      for (std::size_t& i : in_file_order.indices) i = input.report.file_index[i];
+      expmap::IO::write_local_map_csv(out, in_file_order);
       break;
+    }
     case expmap_cli::Output_format::obj:
       expmap::IO::write_textured_obj(out, mesh, run.map);
       break;
@@ -456,16 +518,17 @@ const Method& checked_method(const Compute_arguments& a) {
   return method;
 }
 
-// Runs `f`, adding to the library's complaint about a polygonal mesh how
+// Runs `f`, adding to the library's complaint about a degenerate face how
 // to get past it.
 template <class F>
-auto with_triangulate_hint(const Mesh& mesh, F f) -> decltype(f()) {
+auto with_repair_hint(const Compute_arguments& a, F f) -> decltype(f()) {
   try {
     return f();
   } catch (const expmap::Invalid_input& e) {
-    if (!CGAL::is_triangle_mesh(mesh))
+    // The library names the face; the program knows the option that helps.
+    if (!a.repair && std::string(e.what()).find("degenerate") != std::string::npos)
       throw Runtime_error(std::string(e.what()) +
-                          " (or run expmap with --triangulate to split polygonal faces)");
+                          " (or run expmap with --repair to remove degenerate faces and needles)");
     throw;
   }
 }
@@ -476,19 +539,8 @@ void print_mesh_summary(const Compute_arguments& a, const Mesh& mesh) {
               static_cast<std::size_t>(num_faces(mesh)));
 }
 
-// Throws unless `index` names a vertex of the mesh read from `a.mesh`;
-// `what` says where the index came from.
-void check_vertex_index(const std::string& what, std::size_t index, const Mesh& mesh,
-                        const Compute_arguments& a) {
-  const std::size_t n = num_vertices(mesh);
-  if (index >= n)
-    throw Usage_error(what + " " + std::to_string(index) + " is out of range: '" + a.mesh +
-                      "' has " + std::to_string(n) + " vertices (0 to " + std::to_string(n - 1) +
-                      ")");
-}
-
 // What every command does first: parse (or print help), check the method
-// and the outputs, read the mesh; then `command(arguments, method, mesh)`.
+// and the outputs, read the mesh; then `command(arguments, method, input)`.
 template <class Arguments, class Command>
 int run_command(const std::vector<std::string>& args, Arguments (*parse)(const std::vector<std::string>&),
                 std::string (*help)(), Command command) {
@@ -498,19 +550,18 @@ int run_command(const std::vector<std::string>& args, Arguments (*parse)(const s
     return 0;
   }
   const Method& method = checked_method(a);
-  const Mesh mesh = read_mesh(a);
-  return command(a, method, mesh);
+  const Input input = read_mesh(a);
+  return command(a, method, input);
 }
 
-int compute(const Compute_arguments& a, const Method& method, const Mesh& mesh) {
-  check_vertex_index("--source", a.source, mesh, a);
+int compute(const Compute_arguments& a, const Method& method, const Input& input) {
+  const Mesh& mesh = input.mesh;
+  const Mesh::Vertex_index source =
+      find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a);
   expmap::Query_options query;
   query.reference_direction = a.reference;
 
-  Run run = with_triangulate_hint(mesh, [&] {
-    return method.run(mesh, a, Mesh::Vertex_index(static_cast<Mesh::size_type>(a.source)),
-                      make_patch(a), query);
-  });
+  Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
 
   const auto folds = expmap::count_flipped_triangles(mesh, run.map);
@@ -525,7 +576,7 @@ int compute(const Compute_arguments& a, const Method& method, const Mesh& mesh) 
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
   for (const auto& output : a.outputs) {
-    write_output(output, mesh, run);
+    write_output(output, input, run);
     std::printf("wrote:       %s\n", output.path.c_str());
   }
   return 0;
@@ -556,29 +607,33 @@ std::vector<std::size_t> read_source_file(const std::string& path) {
   return sources;
 }
 
-// The sources of a batch as vertex indices, all in range; "all" leaves out
-// isolated vertices, which have no map.
-std::vector<std::size_t> batch_sources(const Batch_arguments& a, const Mesh& mesh) {
+// The sources of a batch as mesh vertex indices, from file indices that
+// must all be in range; "all" is every vertex of the file in file order
+// but those --repair removed and isolated ones, which have no map.
+std::vector<std::size_t> batch_sources(const Batch_arguments& a, const Input& input) {
   using Kind = expmap_cli::Source_selection::Kind;
+  const std::vector<std::size_t> mesh_vertex = mesh_vertex_of_file_vertex(input);
   std::vector<std::size_t> sources;
   if (a.sources.kind == Kind::all) {
-    for (Mesh::Vertex_index v : vertices(mesh))
-      if (!mesh.is_isolated(v)) sources.push_back(static_cast<std::size_t>(v));
+    for (std::size_t v : mesh_vertex)
+      if (v != removed_vertex && !input.mesh.is_isolated(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))))
+        sources.push_back(v);
     return sources;
   }
-  sources = a.sources.kind == Kind::list ? a.sources.list : read_source_file(a.sources.file);
-  for (std::size_t s : sources) check_vertex_index("--sources: vertex", s, mesh, a);
+  for (std::size_t s : a.sources.kind == Kind::list ? a.sources.list : read_source_file(a.sources.file))
+    sources.push_back(static_cast<std::size_t>(find_file_vertex("--sources: vertex", s, mesh_vertex, a)));
   return sources;
 }
 
-int batch(const Batch_arguments& a, const Method& method, const Mesh& mesh) {
-  const std::vector<std::size_t> sources = batch_sources(a, mesh);
+int batch(const Batch_arguments& a, const Method& method, const Input& input) {
+  const Mesh& mesh = input.mesh;
+  const std::vector<std::size_t> sources = batch_sources(a, input);
   expmap::Query_options query;
   query.reference_direction = a.reference;
 
-  Batch_output output(a.outputs);
-  Batch_run run = with_triangulate_hint(
-      mesh, [&] { return method.run_many(mesh, a, sources, make_patch(a), query, output); });
+  Batch_output output(a.outputs, input.report.file_index);
+  Batch_run run = with_repair_hint(
+      a, [&] { return method.run_many(mesh, a, sources, make_patch(a), query, output); });
   output.finish();
   if (run.description.empty()) run.description = method.description;
 

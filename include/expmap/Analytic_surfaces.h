@@ -35,17 +35,20 @@
 
 namespace expmap {
 
+/// \addtogroup PkgExpmapAnalytic
+/// @{
+
 /// A triangle mesh as a polygon soup: an array of points and an array of
 /// triangles given by indices into `points`.
 ///
 /// Triangles are oriented counter-clockwise seen from the outside of the
 /// surface (the right-hand normal points outward).
 struct Triangle_soup {
-  std::vector<std::array<double, 3>> points;
-  std::vector<std::array<int, 3>> triangles;
+  std::vector<std::array<double, 3>> points;  ///< vertex positions
+  std::vector<std::array<int, 3>> triangles;  ///< corner indices into `points`
 
-  std::size_t number_of_vertices() const { return points.size(); }
-  std::size_t number_of_faces() const { return triangles.size(); }
+  std::size_t number_of_vertices() const { return points.size(); }  ///< `points.size()`
+  std::size_t number_of_faces() const { return triangles.size(); }  ///< `triangles.size()`
 };
 
 /// Exact geodesic polar coordinates of a point relative to a source point.
@@ -60,8 +63,8 @@ struct Triangle_soup {
 /// constant rotation between the two. At the source itself r = 0 and
 /// theta_unrotated = 0.
 struct Polar {
-  double r = 0;
-  double theta_unrotated = 0;
+  double r = 0;                ///< geodesic distance from the source
+  double theta_unrotated = 0;  ///< polar angle from `e1`, in (-pi, pi]
 };
 
 namespace internal {
@@ -896,6 +899,8 @@ inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, doubl
   result.theta_unrotated = rho > 0 ? theta : 0.0;
   return result;
 }
+
+/// @}
 
 }  // namespace expmap
 

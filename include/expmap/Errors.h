@@ -16,6 +16,7 @@ namespace expmap {
 /// offending vertex, face or parameter and says what to do about it.
 class Invalid_input : public std::invalid_argument {
  public:
+  /// `message` becomes `what()`.
   explicit Invalid_input(const std::string& message) : std::invalid_argument(message) {}
 };
 
@@ -24,6 +25,7 @@ class Invalid_input : public std::invalid_argument {
 /// input (for example, heat that underflows to zero inside the patch).
 class Computation_error : public std::runtime_error {
  public:
+  /// `message` becomes `what()`.
   explicit Computation_error(const std::string& message) : std::runtime_error(message) {}
 };
 

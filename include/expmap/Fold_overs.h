@@ -33,7 +33,7 @@ namespace expmap {
 /// A face of the mesh whose three vertices all belong to a local map.
 template <class FaceDescriptor>
 struct Patch_triangle {
-  FaceDescriptor face;
+  FaceDescriptor face;  ///< the face in the mesh
   /// Positions of the corners in the local map (indices into
   /// `Local_map::vertices`), in the face's halfedge order.
   std::array<std::size_t, 3> corner;

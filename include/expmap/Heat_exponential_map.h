@@ -8,6 +8,7 @@
 /// from heat diffusion, computed by localized solves on factorizations of
 /// the whole mesh.
 
+#include <expmap/Angle_estimator.h>
 #include <expmap/Cholmod_solver.h>
 #include <expmap/Errors.h>
 #include <expmap/Local_map.h>
@@ -26,6 +27,7 @@
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/Workspace_pool.h>
 
 #include <CGAL/Default.h>
@@ -64,28 +66,6 @@ enum class Poisson_regularization {
 };
 
 /// \ingroup PkgExpmapRef
-/// How the direction of the geodesic is read off the heat at the source.
-enum class Angle_estimator {
-  /// The paper's eq. (9)-(10): area-weighted tangent gradient of the heat.
-  heat_gradient,
-  /// The same gradient of the logarithm of the heat. Same direction in the
-  /// continuum, but the log of the heat kernel is nearly linear in the
-  /// distance, so the piecewise linear gradient over an irregular one-ring
-  /// is less biased: on the unit icosphere (40,962 vertices) it halves the
-  /// worst mean angle error at m = 1 and m = 10 (doc/time_factor.md).
-  /// Falls back to `heat_gradient` where some heat value is not positive.
-  log_heat_gradient,
-  /// The gradient of the logarithm of the heat from a quadratic fitted by
-  /// least squares on the star of the source, instead of the area-weighted
-  /// piecewise linear gradient: exact for quadratics, so an irregular
-  /// one-ring does not bias the direction. Up to 1.9x smaller angle errors
-  /// on jittered Delaunay height fields and 2.7x on a jittered sphere, but
-  /// more fold-overs on real meshes (doc/manual.md, section 2). Falls back to `log_heat_gradient` at
-  /// sources with fewer than five neighbours.
-  log_heat_quadratic_fit
-};
-
-/// \ingroup PkgExpmapRef
 /// Settings fixed at precomputation (they change the factorizations).
 struct Heat_options {
   /// Diffusion time t = time_factor * h^2, h the mean edge length of the
@@ -108,7 +88,10 @@ struct Heat_options {
   /// count) than the patch; the Poisson step's cut-off error lives in the
   /// margin. Must be at least 1.
   double region_growth = 2.0;
-  Angle_estimator angle_estimator = Angle_estimator::log_heat_gradient;
+  /// How the direction of the geodesic is read off the heat.
+  Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
+  /// Geometric directions next to the source, heat directions beyond.
+  Near_source_blend near_source_blend;
 };
 
 /// \ingroup PkgExpmapRef
@@ -231,6 +214,10 @@ class Heat_exponential_map
     check_time(options.time_factor, "time factor");
     if (options.distance_time_factor)
       check_time(*options.distance_time_factor, "distance time factor");
+    const Near_source_blend& blend = options.near_source_blend;
+    if (!(blend.begin >= 0) || !(blend.end >= blend.begin) || !std::isfinite(blend.end))
+      throw Invalid_input("near_source_blend must satisfy 0 <= begin <= end < infinity (got begin " +
+                          std::to_string(blend.begin) + ", end " + std::to_string(blend.end) + ")");
     if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
       throw Invalid_input("region_growth must be at least 1 (got " +
                           std::to_string(options.region_growth) + ")");
@@ -243,6 +230,7 @@ class Heat_exponential_map
       internal::make_intrinsic_delaunay(tri);
     const std::vector<internal::Triangle_shape> shapes = internal::triangle_shapes(tri);
     m_faces = internal::Faces_by_smallest_corner(tri, shapes);
+    m_heat_neighbors = internal::vertex_adjacency(tri);
 
     const double corner_regularization =
         m_options.regularization == Poisson_regularization::cgal_compatible ? 1e-8 : 0.0;
@@ -316,11 +304,36 @@ class Heat_exponential_map
   // The linear map from heat values on the star of s to their gradient at
   // s, for the chosen angle estimator.
   internal::Star_gradient source_star_gradient(int s, const internal::Tangent_frame& frame) const {
-    if (m_options.angle_estimator == Angle_estimator::log_heat_quadratic_fit)
-      if (auto fitted = internal::quadratic_fit_star_gradient(m_indexed.arrays, s, frame))
+    if (m_options.angle_estimator == Angle_estimator::log_heat_quadratic_fit ||
+        m_options.angle_estimator == Angle_estimator::heat_quadratic_fit) {
+      // Fitted on the triangulation the heat lives on: after intrinsic
+      // Delaunay flips the input one-ring may hold slivers whose far corners
+      // the heat never diffused along. The linear fit costs two columns
+      // whatever its stencil, so it takes the two-ring: twice the baseline
+      // and about three times the samples average out the heat's
+      // vertex-to-vertex discretization noise on irregular meshes (its mean
+      // angle error on a jittered sphere is about a third of the one-ring's).
+      internal::Star_gradient star;
+      star.vertices = internal::ring_neighborhood(
+          m_heat_neighbors, s,
+          m_options.angle_estimator == Angle_estimator::heat_quadratic_fit ? 2 : 1);
+      if (auto fitted = internal::quadratic_fit_star_gradient(m_indexed.arrays, std::move(star), frame))
         return *fitted;
+    }
     return internal::star_gradient(m_indexed.arrays, s, frame);
   }
+  // Columns of the star solve: 2 for a linear estimator, else one per star vertex.
+  std::size_t star_columns(const internal::Star_gradient& star) const {
+    if (!is_linear_in_heat(m_options.angle_estimator)) return star.vertices.size();
+    return m_separate_distance_heat ? 3 : 2;
+  }
+  // Direction of the geodesic from s to patch vertex v at heat distance r,
+  // from the star solve's row `h` (see solve_star_heat), blended with the
+  // chord's direction next to the source (Near_source_blend).
+  // `at_source` is the heat from v at s (for `heat_quadratic_fit`).
+  double polar_angle(int s, int v, double r, double at_source,
+                     const internal::Tangent_frame& frame, const internal::Star_gradient& star,
+                     const double* h, std::vector<double>& values) const;
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
@@ -334,6 +347,7 @@ class Heat_exponential_map
   using Front::m_indexed;
   Heat_options m_options;
   internal::Faces_by_smallest_corner m_faces;  // of the triangulation the operators are built on
+  internal::Vertex_adjacency m_heat_neighbors;  // its neighbours: the stars the angles are fitted on
   std::vector<char> m_is_pinned;  // one vertex per component in the Poisson system
   double m_time_step = 0, m_distance_time_step = 0;
   bool m_separate_distance_heat = false;
@@ -436,13 +450,23 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool wh
 template <class TM, class VPM, class S>
 Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
     const internal::Star_gradient& star, Workspace& ws) const {
-  // Step 1 (angle part): one block solve for the source and each neighbour,
-  // read on the patch only — by symmetry, the heat from every patch vertex
-  // read on the star of the source.
-  const std::size_t width = star.vertices.size();
+  // Step 1 (angle part), read on the patch only. A linear estimator needs
+  // two columns, the rows of the gradient weights: by symmetry their
+  // solution at v is the estimated gradient of the heat from v. A
+  // logarithmic one needs the heat from every patch vertex on the star:
+  // one column per star vertex.
+  const std::size_t width = star_columns(star);
   ws.rhs.clear();
-  for (std::size_t c = 0; c < width; ++c)
-    ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
+  if (is_linear_in_heat(m_options.angle_estimator)) {
+    for (std::size_t c = 0; c < star.vertices.size(); ++c) {
+      ws.rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
+      ws.rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
+    }
+    if (width == 3) ws.rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
+  } else {
+    for (std::size_t c = 0; c < width; ++c)
+      ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
+  }
   ws.star_heat.resize(ws.patch.size() * width);
   return m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.patch.data(), ws.patch.size(),
                             ws.star_heat.data(), ws.heat_solve);
@@ -576,33 +600,68 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                                                     const internal::Star_gradient& star,
                                                     const std::vector<std::size_t>& order,
                                                     const Workspace& ws, Result& result) const {
-  const std::size_t width = star.vertices.size();
+  const std::size_t width = star_columns(star);
   std::vector<internal::Polar_entry> entries;
   entries.reserve(order.size());
-  std::vector<double> values(width);
+  std::vector<double> values(star.vertices.size());
   for (std::size_t p = 0; p < order.size(); ++p) {
     const std::size_t i = order[p];
     const int v = ws.region[i];
     const double* h = ws.star_heat.data() + p * width;
-    if (!(std::abs(h[0]) > std::numeric_limits<double>::min()))
+    // The heat from v at the source: its own column for a logarithmic
+    // estimator, the source heat of the distance step (or, where that has
+    // another time, the third column of the star solve) otherwise.
+    const double at_source = !is_linear_in_heat(m_options.angle_estimator) ? h[0]
+                             : m_separate_distance_heat                     ? h[2]
+                                                                            : ws.region_heat[i];
+    if (!(std::abs(at_source) > std::numeric_limits<double>::min()))
       throw Computation_error("heat diffusion underflows at vertex " +
                               std::to_string(m_indexed.arrays.to_original(v)) +
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
     if (v == s) continue;
-    // Step 3 of the paper: the direction of the geodesic to v is the
-    // gradient at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
-    const bool use_log = m_options.angle_estimator != Angle_estimator::heat_gradient &&
-                         std::all_of(h, h + width, [](double x) { return x > 0; });
-    for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
-    const auto g = star.apply(values.data());
     entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)), ws.potential[i],
-                       std::atan2(g[1], g[0])});
+                       polar_angle(s, v, ws.potential[i], at_source, frame, star, h, values)});
   }
   Solve_statistics statistics = result.statistics;
   result = internal::assemble_local_map(static_cast<int>(m_indexed.arrays.to_original(s)), entries,
                                         m_indexed.descriptors, frame);
   result.statistics = statistics;
+}
+
+template <class TM, class VPM, class S>
+double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, double at_source,
+                                                     const internal::Tangent_frame& frame,
+                                                     const internal::Star_gradient& star,
+                                                     const double* h,
+                                                     std::vector<double>& values) const {
+  // Step 3 of the paper: the direction of the geodesic to v is the gradient
+  // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
+  std::array<double, 2> g;
+  if (is_linear_in_heat(m_options.angle_estimator)) {
+    g = {{h[0], h[1]}};  // the solve applied the gradient weights already
+    if (m_options.angle_estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
+      g = internal::remove_cubic_leak(star, {{g[0] / at_source, g[1] / at_source}},
+                                      std::max(r, m_indexed.arrays.mean_edge_length), m_time_step);
+  } else {
+    const std::size_t width = star.vertices.size();
+    const bool use_log = std::all_of(h, h + width, [](double x) { return x > 0; });
+    for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
+    g = star.apply(values.data());
+  }
+  const double heat_angle = std::atan2(g[1], g[0]);
+  const double h_mean = m_indexed.arrays.mean_edge_length;
+  const double begin = m_options.near_source_blend.begin * h_mean;
+  const double end = m_options.near_source_blend.end * h_mean;
+  if (!(r < end)) return heat_angle;
+  const double chord_angle =
+      frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
+  if (r <= begin) return chord_angle;
+  // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
+  const double x = (r - begin) / (end - begin);
+  const double w = x * x * (3 - 2 * x);
+  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(chord_angle),
+                    w * std::cos(heat_angle) + (1 - w) * std::cos(chord_angle));
 }
 
 /// \ingroup PkgExpmapRef

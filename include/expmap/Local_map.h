@@ -26,15 +26,17 @@ namespace expmap {
 /// normal. `u = r cos(theta)`, `v = r sin(theta)`.
 template <class VertexDescriptor>
 struct Local_map {
-  VertexDescriptor source{};
+  VertexDescriptor source{};               ///< the source vertex
   std::vector<VertexDescriptor> vertices;  ///< patch vertices, nearest first
   std::vector<std::size_t> indices;        ///< their indices in `vertices(tm)`
   std::vector<double> distance;            ///< geodesic distance r
   std::vector<double> angle;               ///< polar angle theta
   std::array<double, 3> normal{};          ///< unit normal of the tangent plane
-  std::array<double, 3> axis_u{}, axis_v{};  ///< tangent axes of angles 0 and pi/2
+  std::array<double, 3> axis_u{};          ///< unit tangent axis of angle 0
+  std::array<double, 3> axis_v{};          ///< unit tangent axis of angle pi/2
   Solve_statistics statistics;             ///< work of the localized solves (heat method)
 
+  /// Number of patch vertices (the source included).
   std::size_t size() const { return vertices.size(); }
   /// Cartesian coordinates (u, v) of the i-th patch vertex.
   std::array<double, 2> uv(std::size_t i) const {

@@ -25,7 +25,13 @@ namespace expmap {
 /// `vertices(tm)`). Patches never leave the source's connected component.
 class Patch {
  public:
-  enum class Kind { geodesic_radius, vertex_count, fraction, vertex_set };
+  /// Which of the four factory functions made the patch.
+  enum class Kind {
+    geodesic_radius,  ///< `geodesic_radius()`: `radius()` is set
+    vertex_count,     ///< `vertex_count()`: `count()` is set
+    fraction,         ///< `fraction()`: `fraction_of_mesh()` is set
+    vertex_set        ///< `vertex_set()`: `vertices()` is set
+  };
 
   /// All vertices whose distance to the source is at most `radius`.
   /// \throws Invalid_input unless `radius` is positive and finite.
@@ -68,10 +74,16 @@ class Patch {
     return p;
   }
 
+  /// The kind of patch; the accessor of that kind holds its parameter,
+  /// the others return 0 or an empty set.
   Kind kind() const { return m_kind; }
+  /// The radius of a `geodesic_radius()` patch.
   double radius() const { return m_radius; }
+  /// The count of a `vertex_count()` patch.
   std::size_t count() const { return m_count; }
+  /// The fraction of a `fraction()` patch.
   double fraction_of_mesh() const { return m_fraction; }
+  /// The vertex indices of a `vertex_set()` patch, as given.
   const std::vector<std::size_t>& vertices() const { return m_vertices; }
 
   /// The number of vertices a count or fraction patch asks for on a mesh of

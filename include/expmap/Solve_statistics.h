@@ -21,6 +21,7 @@ struct Solve_statistics {
   /// Wall-clock time spent in the solves (not in the rest of the query).
   double solve_seconds = 0;
 
+  /// Adds the work of another solve (all fields).
   Solve_statistics& operator+=(const Solve_statistics& other) {
     forward_nodes += other.forward_nodes;
     backward_nodes += other.backward_nodes;

@@ -54,7 +54,7 @@ struct Cli_fixture {
                                        std::to_string(stamp) + "_" + std::to_string(counter++));
     fs::create_directories(dir);
     write_grid(dir / "grid.off", 6);
-    // Two quads: a valid polygon mesh the library must refuse, not triangulate.
+    // Two quads: a valid polygon mesh, triangulated unless --no-triangulate.
     std::ofstream(dir / "quads.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
                                         "4 0 1 4 3\n4 1 2 5 4\n";
   }
@@ -173,8 +173,9 @@ BOOST_AUTO_TEST_CASE(every_method_answers_the_same_patch_size) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(both_angle_estimators_answer) {
-  for (const char* angles : {"area-weighted", "quadratic-fit"}) {
+BOOST_AUTO_TEST_CASE(every_angle_estimator_answers) {
+  for (const char* angles : {"heat-gradient", "log-heat-gradient", "log-heat-quadratic-fit",
+                             "heat-quadratic-fit"}) {
     BOOST_TEST_CONTEXT("--angles " << angles) {
       const int status = run("compute " + file("grid.off") + " --source 24 --vertices 10 --angles " +
                              angles + " -o " + file("map.csv"));
@@ -184,11 +185,14 @@ BOOST_AUTO_TEST_CASE(both_angle_estimators_answer) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(triangulate_makes_polygon_meshes_usable) {
-  const int status = run("compute " + file("quads.off") +
-                         " --triangulate --source 1 --fraction 1 -o " + file("map.csv"));
-  BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
-  BOOST_TEST(read_lines(dir / "map.csv").size() == 7u);  // all six vertices, none added
+BOOST_AUTO_TEST_CASE(polygon_meshes_are_triangulated_by_default) {
+  for (const char* flag : {"", " --triangulate"}) {
+    const int status = run("compute " + file("quads.off") + flag + " --source 1 --fraction 1 -o " +
+                           file("map.csv"));
+    BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
+    BOOST_TEST(read_lines(dir / "map.csv").size() == 7u);  // all six vertices, none added
+    BOOST_TEST(err().rfind("expmap: note: ", 0) == 0, err());
+  }
 }
 
 BOOST_AUTO_TEST_CASE(help_documents_every_option) {
@@ -196,15 +200,18 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--laplacian", "--angles", "--reference", "--triangulate", "--output"})
+        "--laplacian", "--angles", "--near-source-blend", "--reference", "--no-triangulate",
+        "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
 BOOST_AUTO_TEST_CASE(runtime_errors_exit_with_status_1) {
   check_error("compute " + file("missing.off") + " --source 0 --vertices 10 -o " + file("a.csv"),
               1);
-  check_error("compute " + file("quads.off") + " --source 0 --vertices 3 -o " + file("a.csv"), 1);
-  BOOST_TEST(err().find("4 vertices") != std::string::npos, err());
+  check_error("compute " + file("quads.off") + " --no-triangulate --source 0 --vertices 3 -o " +
+                  file("a.csv"),
+              1);
+  BOOST_TEST(err().find("more than three vertices") != std::string::npos, err());
   BOOST_TEST(!std::filesystem::exists(dir / "a.csv"));
 }
 
@@ -317,12 +324,62 @@ BOOST_AUTO_TEST_CASE(writes_npz) {
     BOOST_TEST(npz.find(name) != std::string::npos, name);
 }
 
+// Reading may renumber the mesh (a non-manifold vertex split into copies
+// added at the end, --repair removing vertices); `batch`, like `compute`,
+// speaks of the file's vertices in --sources and in both columns.
+BOOST_AUTO_TEST_CASE(indices_are_the_files_when_reading_renumbers) {
+  std::ofstream(dir / "bowtie.off") << "OFF\n7 4 0\n0 0 0\n1 0 0\n1 1 0.1\n0 1 0\n-1 0 0\n"
+                                       "-1 -1 0.1\n0 -1 0\n3 0 1 2\n3 0 2 3\n3 0 4 5\n3 0 5 6\n";
+  // Vertex 1 sits 1e-7 from vertex 0: --repair collapses the needles and
+  // removes it, so mesh vertex 1 is file vertex 2.
+  std::ofstream(dir / "needle.off") << "OFF\n6 5 0\n0 0 0\n1e-7 0 0\n2 0 0\n2 2 0\n0 2 0\n"
+                                       "1 3 0\n3 0 1 3\n3 1 2 3\n3 0 3 4\n3 4 3 5\n3 0 4 1\n";
+  const std::string bowtie = file("bowtie.off"), needle = file("needle.off") + " --repair";
+  for (const std::string& mesh_and_flags : {bowtie, needle}) {
+    BOOST_TEST_CONTEXT(mesh_and_flags) {
+      const std::string patch = " --vertices 3 " + mesh_and_flags;
+      BOOST_TEST_REQUIRE(run("batch " + patch + " --sources all -o " + file("b.csv")) == 0, err());
+      BOOST_TEST(err().rfind("expmap: note: ", 0) == 0, err());  // reading did change the mesh
+      const auto rows = csv_rows(dir / "b.csv");
+      std::vector<std::string> sources;
+      for (const std::string& row : rows) {
+        const std::string source = row.substr(0, row.find(','));
+        if (sources.empty() || sources.back() != source) sources.push_back(source);
+      }
+      // "all" is every file vertex once: the bow tie's pinch vertex 0 and its
+      // copy are both file vertex 0; the removed needle vertex is left out.
+      const auto expected = mesh_and_flags == bowtie
+                                ? std::vector<std::string>{"0", "1", "2", "3", "4", "5", "6"}
+                                : std::vector<std::string>{"0", "2", "3", "4", "5"};
+      BOOST_TEST(sources == expected);
+      std::size_t row = 0;
+      for (const std::string& source : sources) {
+        BOOST_TEST_REQUIRE(
+            run("compute " + patch + " --source " + source + " -o " + file("one.csv")) == 0, err());
+        for (const std::string& one : csv_rows(dir / "one.csv"))
+          BOOST_TEST(rows.at(row++) == source + "," + one);
+      }
+      BOOST_TEST(row == rows.size());
+      // After the note on reading, the error (so not check_error).
+      BOOST_TEST(run("batch " + patch + " --sources 2,8 -o " + file("a.csv")) == 2);
+      BOOST_TEST(err().find("expmap: error: --sources: vertex 8 is out of range") != std::string::npos,
+                 err());  // 7 and 6 vertices in the files
+    }
+  }
+  BOOST_TEST(run("batch " + needle + " --vertices 3 --sources 0,1 -o " + file("a.csv")) == 1);
+  BOOST_TEST(err().find("expmap: error: --sources: vertex 1 was removed by --repair") !=
+                 std::string::npos,
+             err());
+  BOOST_TEST(!fs::exists(dir / "a.csv"));
+}
+
 BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   BOOST_TEST_REQUIRE(run("batch --help") == 0);
   const std::string help = out();
-  for (const char* option : {"--sources", "--threads", "--radius", "--fraction", "--vertices",
-                             "--method", "--time-factor", "--triangulate", "--output", ".npz",
-                             "expmap: warning:"})
+  for (const char* option :
+       {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
+        "--time-factor", "--laplacian", "--angles", "--near-source-blend", "--reference",
+        "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
   BOOST_TEST_REQUIRE(run("--help") == 0);
   BOOST_TEST(out().find("batch") != std::string::npos);
@@ -343,8 +400,8 @@ BOOST_AUTO_TEST_CASE(errors_leave_no_output) {
   std::ofstream(dir / "bad.txt") << "1 2\nthree\n";
   check_error(grid + " --sources @" + file("bad.txt") + " --vertices 10" + csv, 1);
   BOOST_TEST(err().find("line 2") != std::string::npos, err());
-  check_error("batch " + file("quads.off") + " --sources all --vertices 3" + csv, 1);
-  BOOST_TEST(err().find("--triangulate") != std::string::npos, err());
+  check_error("batch " + file("quads.off") + " --sources all --vertices 3 --no-triangulate" + csv, 1);
+  BOOST_TEST(err().find("more than three vertices") != std::string::npos, err());
   check_error("compute " + file("grid.off") + " --source 0 --vertices 3 -o " + file("a.npz"), 2);
   BOOST_TEST(!fs::exists(dir / "a.csv"));
   BOOST_TEST(!fs::exists(dir / "a.npz"));

@@ -179,6 +179,13 @@ inline void check_face_shapes(const Mesh_arrays& m) {
     const Vector3 e3 = m.point[c[2]] - m.point[c[1]];
     const double longest2 = std::max({squared_norm(e1), squared_norm(e2), squared_norm(e3)});
     const double twice_area = norm(cross(e1, e2));
+    // Finite coordinates near 1e308 still overflow here; that is not a
+    // degenerate face, and removing degenerate faces would not help.
+    if (!std::isfinite(longest2) || !std::isfinite(twice_area))
+      throw Invalid_input("face " + std::to_string(f) + " (vertices " + std::to_string(c[0]) +
+                          ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +
+                          ") is too large for double precision (its squared edge lengths "
+                          "overflow); scale the mesh to coordinates well below 1e150");
     if (!(twice_area > 1e-10 * longest2))
       throw Invalid_input("face " + std::to_string(f) + " (vertices " + std::to_string(c[0]) +
                           ", " + std::to_string(c[1]) + ", " + std::to_string(c[2]) +

@@ -1,0 +1,64 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
+#define EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
+
+#include <expmap/internal/Intrinsic_triangulation.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// The neighbours of every vertex in a triangulation (compressed rows,
+/// sorted, without duplicates): after intrinsic Delaunay flips they differ
+/// from the input mesh's, and the heat lives on them.
+struct Vertex_adjacency {
+  std::vector<int> start, neighbor;
+
+  const int* begin(int v) const { return neighbor.data() + start[v]; }
+  const int* end(int v) const { return neighbor.data() + start[v + 1]; }
+};
+
+inline Vertex_adjacency vertex_adjacency(const Intrinsic_triangulation& tri) {
+  const std::size_t n = tri.number_of_vertices;
+  std::vector<int> count(n + 1, 0);
+  for (const auto& f : tri.face)
+    for (int v : f) count[static_cast<std::size_t>(v) + 1] += 2;
+  for (std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];
+  std::vector<int> all(static_cast<std::size_t>(count[n]));
+  std::vector<int> fill(count.begin(), count.end() - 1);
+  for (const auto& f : tri.face)
+    for (int k = 0; k < 3; ++k) {
+      all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 1) % 3];
+      all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 2) % 3];
+    }
+  Vertex_adjacency a;
+  a.start.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) {
+    auto first = all.begin() + count[v], last = all.begin() + count[v + 1];
+    std::sort(first, last);
+    a.neighbor.insert(a.neighbor.end(), first, std::unique(first, last));
+    a.start[v + 1] = static_cast<int>(a.neighbor.size());
+  }
+  return a;
+}
+
+/// s, then its neighbours, then (if `rings` is 2) their other neighbours:
+/// the vertices within `rings` edges of s, nearest ring first.
+inline std::vector<int> ring_neighborhood(const Vertex_adjacency& a, int s, int rings) {
+  std::vector<int> vertices{s};
+  vertices.insert(vertices.end(), a.begin(s), a.end(s));
+  if (rings < 2) return vertices;
+  const std::size_t one_ring = vertices.size();
+  for (std::size_t c = 1; c < one_ring; ++c)
+    for (const int* w = a.begin(vertices[c]); w != a.end(vertices[c]); ++w)
+      if (std::find(vertices.begin(), vertices.end(), *w) == vertices.end()) vertices.push_back(*w);
+  return vertices;
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
