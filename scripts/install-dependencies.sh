@@ -12,6 +12,7 @@ packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
           libboost-graph-dev libboost-test-dev libopenblas0-pthread
           libopenmesh-dev
+          python3-numpy  # the test that loads `expmap batch` .npz output with NumPy
           "$@")
 missing=()
 for p in "${packages[@]}"; do

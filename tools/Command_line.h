@@ -4,7 +4,7 @@
 #define EXPMAP_TOOLS_COMMAND_LINE_H
 
 /// \file Command_line.h
-/// Parsing of `expmap compute` arguments, by hand: the grammar is small, and
+/// Parsing of `expmap compute` and `expmap batch` arguments, by hand: the grammar is small, and
 /// a dependency (Boost.Program_options needs a compiled library) would cost
 /// more than it saves. Only syntax and value ranges are checked here; what
 /// needs the mesh (the source index) is checked after reading it.
@@ -31,14 +31,15 @@ class Usage_error : public std::runtime_error {
   explicit Usage_error(const std::string& message) : std::runtime_error(message) {}
 };
 
-enum class Output_format { csv, obj, svg };
+enum class Output_format { csv, obj, svg, npz };
 
 struct Output {
   std::string path;
   Output_format format;
 };
 
-/// What `expmap compute` was asked to do. Optional fields are unset when
+/// What `expmap compute` was asked to do (and, but for `source`, what each
+/// map of `expmap batch` is). Optional fields are unset when
 /// the option was not given, so the library's defaults stay in one place.
 struct Compute_arguments {
   std::string mesh;
@@ -57,6 +58,21 @@ struct Compute_arguments {
   bool help = false;
 };
 
+/// Which vertices `expmap batch` maps.
+struct Source_selection {
+  enum class Kind { all, list, file };
+  Kind kind = Kind::all;
+  std::vector<std::size_t> list;  // Kind::list
+  std::string file;               // Kind::file: read once the mesh is known
+};
+
+/// What `expmap batch` was asked to do: the maps of `expmap compute` (whose
+/// `source` it does not use) from many sources.
+struct Batch_arguments : Compute_arguments {
+  Source_selection sources;
+  unsigned threads = 0;  // 0: all cores
+};
+
 /// The format an output path asks for, by its extension (any letter case).
 /// \throws Usage_error for any other extension.
 inline Output_format output_format(const std::string& path) {
@@ -70,8 +86,9 @@ inline Output_format output_format(const std::string& path) {
   if (ext == "csv") return Output_format::csv;
   if (ext == "obj") return Output_format::obj;
   if (ext == "svg") return Output_format::svg;
+  if (ext == "npz") return Output_format::npz;
   throw Usage_error("cannot tell the format of output '" + path +
-                    "': its extension must be .csv, .obj or .svg");
+                    "': its extension must be .csv, .obj or .svg (compute) or .csv, .npz (batch)");
 }
 
 /// A finite real number filling the whole of `text`.
@@ -98,6 +115,11 @@ inline std::size_t parse_index(const std::string& option, const std::string& tex
   return static_cast<std::size_t>(value);
 }
 
+/// Throws if an option that may be given once comes again.
+inline void check_once(const std::string& name, bool given) {
+  if (given) throw Usage_error(name + " is given more than once");
+}
+
 /// Three numbers separated by commas, e.g. "1,0,0".
 inline std::array<double, 3> parse_vector(const std::string& option, const std::string& text) {
   std::array<double, 3> v{};
@@ -113,13 +135,37 @@ inline std::array<double, 3> parse_vector(const std::string& option, const std::
   return v;
 }
 
-/// Parses the arguments that follow `compute` (`args` excludes the program
-/// and command names). `--help` stops checking: the caller prints help.
+/// The sources of `expmap batch`: "all", comma-separated indices "3,17,42",
+/// or "@FILE" (indices in a file, read later).
+inline Source_selection parse_sources(const std::string& option, const std::string& text) {
+  Source_selection s;
+  if (text == "all") return s;
+  if (!text.empty() && text[0] == '@') {
+    if (text.size() == 1) throw Usage_error(option + " @FILE needs a file name after '@'");
+    s.kind = Source_selection::Kind::file;
+    s.file = text.substr(1);
+    return s;
+  }
+  s.kind = Source_selection::Kind::list;
+  std::string::size_type start = 0;
+  for (;;) {
+    const std::string::size_type comma = text.find(',', start);
+    s.list.push_back(parse_index(option, text.substr(start, comma - start)));
+    if (comma == std::string::npos) return s;
+    start = comma + 1;
+  }
+}
+
+/// Parses the options `compute` and `batch` share and the mesh file,
+/// calling `own(name, take_value)` first for the command's own options (it
+/// returns false for names it does not know). `--help` stops checking: the
+/// caller prints help. `args` excludes the program and command names.
 /// \throws Usage_error naming the offending option or value.
-inline Compute_arguments parse_compute_arguments(const std::vector<std::string>& args) {
-  Compute_arguments a;
+template <class Own_options>
+void parse_map_options(const std::vector<std::string>& args, const std::string& command,
+                       Compute_arguments& a, Own_options own) {
   std::vector<std::string> positional;
-  bool method_given = false, source_given = false, options_ended = false;
+  bool method_given = false, options_ended = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     std::string name = args[i], value;
     bool inline_value = false;
@@ -144,17 +190,13 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
       if (i + 1 >= args.size()) throw Usage_error(name + " needs a value");
       return args[++i];
     };
-    auto once = [&](bool given) {
-      if (given) throw Usage_error(name + " is given more than once");
-    };
+    auto once = [&](bool given) { check_once(name, given); };
 
     if (name == "-h" || name == "--help") {
       a.help = true;
-      return a;
-    } else if (name == "--source") {
-      once(source_given);
-      a.source = parse_index(name, take_value());
-      source_given = true;
+      return;
+    } else if (own(name, take_value)) {
+      continue;
     } else if (name == "--radius") {
       once(a.radius.has_value());
       const std::string text = take_value();
@@ -223,22 +265,79 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
       const std::string path = take_value();
       a.outputs.push_back({path, output_format(path)});
     } else {
-      throw Usage_error("unknown option '" + name + "' (see expmap compute --help)");
+      throw Usage_error("unknown option '" + name + "' (see expmap " + command + " --help)");
     }
   }
 
-  if (positional.empty()) throw Usage_error("no mesh file given (see expmap compute --help)");
+  if (positional.empty())
+    throw Usage_error("no mesh file given (see expmap " + command + " --help)");
   if (positional.size() > 1)
     throw Usage_error("more than one mesh file given ('" + positional[0] + "', '" + positional[1] +
                       "')");
   a.mesh = positional[0];
-  if (!source_given) throw Usage_error("--source V is required (a 0-based vertex index)");
+}
+
+/// Checks what both commands require once all options are read: one patch
+/// and outputs in the `formats` the command writes (`names` for messages).
+inline void check_patch_and_outputs(const Compute_arguments& a,
+                                    const std::vector<Output_format>& formats,
+                                    const std::string& names) {
   const int regions =
       int(a.radius.has_value()) + int(a.fraction.has_value()) + int(a.vertex_count.has_value());
   if (regions != 1)
     throw Usage_error("give exactly one of --radius, --fraction and --vertices (got " +
                       std::to_string(regions) + ")");
-  if (a.outputs.empty()) throw Usage_error("no output given (-o FILE.csv, .obj or .svg)");
+  if (a.outputs.empty()) throw Usage_error("no output given (-o FILE" + names + ")");
+  for (const Output& output : a.outputs)
+    if (std::find(formats.begin(), formats.end(), output.format) == formats.end())
+      throw Usage_error("output '" + output.path + "': this command writes FILE" + names);
+}
+
+/// Parses the arguments that follow `compute`.
+/// \throws Usage_error naming the offending option or value.
+inline Compute_arguments parse_compute_arguments(const std::vector<std::string>& args) {
+  Compute_arguments a;
+  bool source_given = false;
+  parse_map_options(args, "compute", a, [&](const std::string& name, auto take_value) {
+    if (name != "--source") return false;
+    check_once(name, source_given);
+    a.source = parse_index(name, take_value());
+    source_given = true;
+    return true;
+  });
+  if (a.help) return a;
+  if (!source_given) throw Usage_error("--source V is required (a 0-based vertex index)");
+  using F = Output_format;
+  check_patch_and_outputs(a, {F::csv, F::obj, F::svg}, ".csv, .obj or .svg");
+  return a;
+}
+
+/// Parses the arguments that follow `batch`.
+/// \throws Usage_error naming the offending option or value.
+inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& args) {
+  Batch_arguments a;
+  bool sources_given = false, threads_given = false;
+  parse_map_options(args, "batch", a, [&](const std::string& name, auto take_value) {
+    if (name == "--sources") {
+      check_once(name, sources_given);
+      a.sources = parse_sources(name, take_value());
+      sources_given = true;
+    } else if (name == "--threads") {
+      check_once(name, threads_given);
+      const std::size_t threads = parse_index(name, take_value());
+      if (threads > 4096) throw Usage_error("--threads must be at most 4096 (0: all cores)");
+      a.threads = static_cast<unsigned>(threads);
+      threads_given = true;
+    } else {
+      return false;
+    }
+    return true;
+  });
+  if (a.help) return a;
+  if (!sources_given)
+    throw Usage_error("--sources is required: all, a list I,J,K or @FILE (0-based vertex indices)");
+  using F = Output_format;
+  check_patch_and_outputs(a, {F::csv, F::npz}, ".csv or .npz");
   return a;
 }
 

@@ -6,8 +6,11 @@
 // 2 usage error (options and their values). Every error is one line on
 // stderr starting with "expmap: error: ".
 
+#include "Batch_table.h"
 #include "Command_line.h"
+#include "Progress_bar.h"
 
+#include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Errors.h>
 #include <expmap/Exact_exponential_map.h>
@@ -35,12 +38,14 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
 
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
+using expmap_cli::Batch_arguments;
 using expmap_cli::Compute_arguments;
 using expmap_cli::Usage_error;
 
@@ -75,8 +80,9 @@ Run timed_run(Make make, Mesh::Vertex_index source, const expmap::Patch& patch,
   return run;
 }
 
-Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index source,
-             const expmap::Patch& patch, const expmap::Query_options& query) {
+using Heat = expmap::Heat_exponential_map<Mesh>;
+
+expmap::Heat_options heat_options(const Compute_arguments& a) {
   expmap::Heat_options options;
   if (a.time_factor) options.time_factor = *a.time_factor;
   if (a.laplacian == std::string("intrinsic-delaunay"))
@@ -85,8 +91,29 @@ Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index so
     options.laplacian = expmap::Laplacian_mode::direct;
   if (a.angles) options.angle_estimator = *a.angles;
   if (a.near_source_blend) options.near_source_blend = *a.near_source_blend;
-  Run run = timed_run([&] { return expmap::Heat_exponential_map<Mesh>(mesh, options); }, source,
-                      patch, query);
+  return options;
+}
+
+// How a method is built from the command line: from the mesh alone, or
+// for the heat method with its settings.
+template <class Method_class>
+Method_class make_method(const Mesh& mesh, const Compute_arguments&) {
+  return Method_class(mesh);
+}
+template <>
+Heat make_method<Heat>(const Mesh& mesh, const Compute_arguments& a) {
+  return Heat(mesh, heat_options(a));
+}
+
+// The method's settings in words for the summary and the SVG caption; ""
+// for methods without settings (the table's description is used).
+template <class Method_class>
+std::string settings_description(const Compute_arguments&) {
+  return "";
+}
+template <>
+std::string settings_description<Heat>(const Compute_arguments& a) {
+  const expmap::Heat_options options = heat_options(a);
   std::ostringstream d;
   d << "heat method (time factor " << options.time_factor << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "intrinsic Delaunay")
@@ -94,15 +121,131 @@ Run run_heat(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index so
     << expmap::to_string(options.angle_estimator) << " angles, chord directions to "
     << options.near_source_blend.begin << " h, blended by " << options.near_source_blend.end
     << " h)";
-  run.description = d.str();
+  return d.str();
+}
+
+template <class Method_class>
+Run run_one(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index source,
+            const expmap::Patch& patch, const expmap::Query_options& query) {
+  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch, query);
+  run.description = settings_description<Method_class>(a);
   return run;
 }
 
-// A method without settings of its own: built from the mesh alone.
+/// Where the maps of a batch go: CSV rows as each chunk of maps arrives (so
+/// memory stays bounded), the columns of `.npz` outputs at the end (they
+/// hold the whole table). Files are created on the first chunk, after the
+/// precomputation succeeded, and removed again if the batch does not finish.
+class Batch_output {
+ public:
+  // `file_index` as in Mesh_reading_report: the outputs speak of the file's
+  // vertices, not the mesh's.
+  Batch_output(const std::vector<expmap_cli::Output>& outputs,
+               const std::vector<std::size_t>& file_index)
+      : m_outputs(outputs), m_file_index(file_index) {}
+  Batch_output(const Batch_output&) = delete;
+  Batch_output& operator=(const Batch_output&) = delete;
+  ~Batch_output() {
+    if (m_finished) return;
+    m_csv.clear();
+    std::error_code ignored;
+    for (const auto& output : m_outputs) std::filesystem::remove(output.path, ignored);
+  }
+
+  // `chunk` numbers vertices as the mesh does.
+  void write(expmap_cli::Batch_table chunk) {
+    for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
+    for (std::int64_t& v : chunk.vertex) v = static_cast<std::int64_t>(m_file_index[v]);
+    if (!m_opened) open_csv();
+    for (std::ofstream& out : m_csv) expmap_cli::write_csv_rows(out, chunk);
+    if (has(expmap_cli::Output_format::npz)) m_table.append(chunk);
+  }
+
+  void finish() {
+    if (!m_opened) open_csv();  // a batch of no sources still gets its header
+    for (const auto& output : m_outputs) {
+      if (output.format != expmap_cli::Output_format::npz) continue;
+      std::ofstream out(output.path, std::ios::binary);
+      expmap_cli::write_npz(out, m_table);
+      close_checked(out, output.path);
+    }
+    std::size_t k = 0;
+    for (const auto& output : m_outputs)
+      if (output.format == expmap_cli::Output_format::csv) close_checked(m_csv[k++], output.path);
+    m_finished = true;
+  }
+
+ private:
+  bool has(expmap_cli::Output_format format) const {
+    return std::any_of(m_outputs.begin(), m_outputs.end(),
+                       [&](const expmap_cli::Output& o) { return o.format == format; });
+  }
+  void open_csv() {
+    for (const auto& output : m_outputs) {
+      if (output.format != expmap_cli::Output_format::csv) continue;
+      m_csv.emplace_back(output.path);
+      if (!m_csv.back()) throw Runtime_error("cannot create output file '" + output.path + "'");
+      m_csv.back() << "source,vertex,r,theta,u,v\n";
+    }
+    m_opened = true;
+  }
+  static void close_checked(std::ofstream& out, const std::string& path) {
+    out.close();
+    if (!out) throw Runtime_error("could not write all of '" + path + "'");
+  }
+
+  std::vector<expmap_cli::Output> m_outputs;
+  const std::vector<std::size_t>& m_file_index;
+  std::vector<std::ofstream> m_csv;
+  expmap_cli::Batch_table m_table;
+  bool m_opened = false, m_finished = false;
+};
+
+struct Batch_run {
+  std::string description;  // as Run::description
+  double precompute_seconds = 0, batch_seconds = 0;
+  std::size_t rows = 0;
+  std::vector<std::string> errors;  // one per failed source, in source order
+};
+
+// Precomputes and maps every source, a chunk of sources at a time: a chunk
+// holds about `rows_in_flight` rows (the first, small one measures the patch
+// size), so memory does not grow with the number of sources.
 template <class Method_class>
-Run run_plain(const Mesh& mesh, const Compute_arguments&, Mesh::Vertex_index source,
-              const expmap::Patch& patch, const expmap::Query_options& query) {
-  return timed_run([&] { return Method_class(mesh); }, source, patch, query);
+Batch_run run_many(const Mesh& mesh, const Batch_arguments& a,
+                   const std::vector<std::size_t>& sources, const expmap::Patch& patch,
+                   const expmap::Query_options& query, Batch_output& output) {
+  const std::size_t rows_in_flight = std::size_t(1) << 22;
+  Batch_run run;
+  auto start = std::chrono::steady_clock::now();
+  const auto method = make_method<Method_class>(mesh, a);
+  run.precompute_seconds = seconds_since(start);
+  run.description = settings_description<Method_class>(a);
+
+  start = std::chrono::steady_clock::now();
+  expmap_cli::Progress_bar bar(sources.size());
+  expmap::Batch_options options;
+  options.threads = a.threads;
+  std::size_t done = 0;
+  options.progress = [&](std::size_t k, std::size_t) { bar.update(done + k); };
+  while (done < sources.size()) {
+    const std::size_t rows_per_map = done ? std::max<std::size_t>(1, run.rows / done) : 0;
+    const std::size_t chunk = std::min(sources.size() - done,
+                                       rows_per_map ? std::max<std::size_t>(64, rows_in_flight / rows_per_map) : 64);
+    const std::vector<std::size_t> part(sources.begin() + done, sources.begin() + done + chunk);
+    const auto result = method.compute_many_by_index(part, patch, options, query);
+    expmap_cli::Batch_table table;
+    for (std::size_t i = 0; i < part.size(); ++i) {
+      table.append(part[i], result.maps[i]);
+      if (!result.errors[i].empty()) run.errors.push_back(result.errors[i]);
+    }
+    output.write(table);
+    run.rows += table.rows();
+    done += chunk;
+  }
+  bar.finish();
+  run.batch_seconds = seconds_since(start);
+  return run;
 }
 
 // The one place that knows the methods: parsing, help, dispatch and the
@@ -114,17 +257,27 @@ struct Method {
   bool takes_heat_options;  // --time-factor, --laplacian and --angles
   Run (*run)(const Mesh&, const Compute_arguments&, Mesh::Vertex_index, const expmap::Patch&,
              const expmap::Query_options&);
+  Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const std::vector<std::size_t>&,
+                        const expmap::Patch&, const expmap::Query_options&, Batch_output&);
 };
 
+template <class Method_class>
+constexpr Method method_row(const char* name, const char* summary, const char* description,
+                            bool takes_heat_options) {
+  return {name, summary, description, takes_heat_options, run_one<Method_class>,
+          run_many<Method_class>};
+}
+
 const Method methods[] = {
-    {"heat", "smoothed, by heat diffusion (Herholz & Alexa)", "heat method", true, run_heat},
-    {"dem", "discrete exponential map (Schmidt et al.)", "DEM (discrete exponential map)", false,
-     run_plain<expmap::Discrete_exponential_map<Mesh>>},
-    {"dgpc", "geodesic polar coordinates (Melvaer & Reimers)",
-     "DGPC (discrete geodesic polar coordinates)", false,
-     run_plain<expmap::Geodesic_polar_coordinates<Mesh>>},
-    {"exact", "exact polyhedral geodesics; slow, a reference", "exact polyhedral exponential map",
-     false, run_plain<expmap::Exact_exponential_map<Mesh>>},
+    method_row<Heat>("heat", "smoothed, by heat diffusion (Herholz & Alexa)", "heat method", true),
+    method_row<expmap::Discrete_exponential_map<Mesh>>(
+        "dem", "discrete exponential map (Schmidt et al.)", "DEM (discrete exponential map)", false),
+    method_row<expmap::Geodesic_polar_coordinates<Mesh>>(
+        "dgpc", "geodesic polar coordinates (Melvaer & Reimers)",
+        "DGPC (discrete geodesic polar coordinates)", false),
+    method_row<expmap::Exact_exponential_map<Mesh>>(
+        "exact", "exact polyhedral geodesics; slow, a reference",
+        "exact polyhedral exponential map", false),
 };
 
 const Method& find_method(const std::string& name) {
@@ -138,30 +291,28 @@ const Method& find_method(const std::string& name) {
 std::string general_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
          "                      [options] -o OUT [-o OUT ...]\n"
-         "       expmap --help | expmap compute --help\n"
+         "       expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
+         "                    --vertices K) [options] -o OUT [-o OUT ...]\n"
+         "       expmap --help | expmap compute --help | expmap batch --help\n"
          "\n"
-         "Computes a local exponential map (geodesic polar coordinates r, theta and\n"
-         "u = r cos theta, v = r sin theta) around a source vertex of a triangle mesh.\n"
+         "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
+         "u = r cos theta, v = r sin theta) around source vertices of a triangle mesh.\n"
          "\n"
          "commands:\n"
          "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
+         "  batch     map a patch around each of many sources on all cores and write\n"
+         "            them as one CSV or NumPy .npz\n"
          "\n"
          "exit status: 0 success, 1 runtime error (file, mesh, computation),\n"
          "             2 usage error (options and their values)\n";
 }
 
-std::string compute_help() {
+// The options of the patch, the method and the input, which `compute` and
+// `batch` share.
+std::string map_options_help() {
   std::ostringstream h;
   const expmap::Heat_options defaults;
-  h << "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-       "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
-       "                      [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
-       "                      -o OUT [-o OUT ...]\n"
-       "\n"
-       "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
-       "  --source V           source vertex, 0-based index in file order (required;\n"
-       "                       STL lists no vertices: order of first appearance)\n"
-       "patch (exactly one):\n"
+  h << "patch (exactly one):\n"
        "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
        "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
        "                       1 maps the source's whole connected component\n"
@@ -203,20 +354,64 @@ std::string compute_help() {
        "                       asks for the default explicitly)\n"
        "  --repair             remove degenerate faces (zero area), needles and caps\n"
        "                       by collapsing and flipping edges; vertex indices in the\n"
-       "                       CSV stay those of the file\n"
-       "output (at least one, format by extension; may repeat):\n"
-       "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"
-       "                             vertex, nearest first; theta in (-pi, pi]\n"
-       "                       .obj  the patch with texture coordinates\n"
-       "                             vt = (u/(2R) + 0.5, v/(2R) + 0.5), R = max r\n"
-       "                       .svg  the patch flattened in the (u, v) plane, shaded\n"
-       "                             by distance, flipped triangles in red\n"
-       "  -h, --help           this help\n"
-       "\n"
-       "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
-       "max r, flipped triangles) goes to stdout; errors go to stderr as\n"
-       "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
+       "                       output stay those of the file\n";
   return h.str();
+}
+
+std::string compute_help() {
+  return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
+         "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
+         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
+         "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
+         "\n"
+         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
+         "  --source V           source vertex, 0-based index in file order (required;\n"
+         "                       STL lists no vertices: order of first appearance)\n" +
+         map_options_help() +
+         "output (at least one, format by extension; may repeat):\n"
+         "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"
+         "                             vertex, nearest first; theta in (-pi, pi]\n"
+         "                       .obj  the patch with texture coordinates\n"
+         "                             vt = (u/(2R) + 0.5, v/(2R) + 0.5), R = max r\n"
+         "                       .svg  the patch flattened in the (u, v) plane, shaded\n"
+         "                             by distance, flipped triangles in red\n"
+         "  -h, --help           this help\n"
+         "\n"
+         "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
+         "max r, flipped triangles) goes to stdout; errors go to stderr as\n"
+         "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
+}
+
+std::string batch_help() {
+  return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
+         "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
+         "                    [--laplacian L] [--angles A] [--near-source-blend B,E]\n"
+         "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+         "                    -o OUT [-o OUT ...]\n"
+         "\n"
+         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
+         "  --sources S          the source vertices, 0-based indices in file order\n"
+         "                       (required): all (every vertex with a face), a list\n"
+         "                       I,J,K, or @FILE (indices separated by spaces, commas\n"
+         "                       or newlines; '#' starts a comment); maps come in\n"
+         "                       this order, repeats included\n"
+         "  --threads N          queries run on N threads (default: 0, all cores)\n" +
+         map_options_help() +
+         "output (at least one, format by extension; may repeat):\n"
+         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v; per source its\n"
+         "                             patch vertices, nearest first\n"
+         "                       .npz  NumPy arrays (numpy.load): sources (k),\n"
+         "                             offsets (k+1), vertex, r, theta, u, v; rows\n"
+         "                             offsets[i] to offsets[i+1] belong to sources[i]\n"
+         "  -h, --help           this help\n"
+         "\n"
+         "A progress bar (maps done, maps per second, time left) goes to stderr when it\n"
+         "is a terminal; a summary to stdout. A source whose query fails (e.g. an\n"
+         "isolated vertex, heat underflow) costs only its own map: it gets a line\n"
+         "'expmap: warning: ...' on stderr and no rows (in .npz an empty range), the\n"
+         "other maps are written, and the exit status is 1. Other errors go to stderr\n"
+         "as 'expmap: error: ...' with exit status 1 (runtime) or 2 (usage), and no\n"
+         "output is left behind.\n";
 }
 
 // The mesh as the methods need it, and where its vertices are in the file.
@@ -248,18 +443,30 @@ Input read_mesh(const Compute_arguments& a) {
   return input;
 }
 
-// The mesh vertex at position `source` of the file.
-Mesh::Vertex_index find_source(const Compute_arguments& a, const Input& input) {
-  const auto& file_index = input.report.file_index;
-  const auto found = std::find(file_index.begin(), file_index.end(), a.source);
-  if (found != file_index.end())
-    return Mesh::Vertex_index(static_cast<Mesh::size_type>(found - file_index.begin()));
-  const std::size_t n = input.report.file_vertices;
-  if (a.source < n)
-    throw Runtime_error("--source " + std::to_string(a.source) +
+// For each vertex of the file, the mesh vertex standing for it (the first,
+// if a non-manifold vertex was split), or `removed_vertex` if --repair
+// removed it.
+constexpr std::size_t removed_vertex = static_cast<std::size_t>(-1);
+std::vector<std::size_t> mesh_vertex_of_file_vertex(const Input& input) {
+  std::vector<std::size_t> mesh_vertex(input.report.file_vertices, removed_vertex);
+  for (std::size_t i = input.report.file_index.size(); i-- > 0;)
+    mesh_vertex[input.report.file_index[i]] = i;
+  return mesh_vertex;
+}
+
+// The mesh vertex at position `index` of the file; `what` says where the
+// index came from ("--source").
+Mesh::Vertex_index find_file_vertex(const std::string& what, std::size_t index,
+                                    const std::vector<std::size_t>& mesh_vertex,
+                                    const Compute_arguments& a) {
+  if (index < mesh_vertex.size() && mesh_vertex[index] != removed_vertex)
+    return Mesh::Vertex_index(static_cast<Mesh::size_type>(mesh_vertex[index]));
+  const std::size_t n = mesh_vertex.size();
+  if (index < n)
+    throw Runtime_error(what + " " + std::to_string(index) +
                         " was removed by --repair (it lay on a degenerate face); choose another");
-  throw Usage_error("--source " + std::to_string(a.source) + " is out of range: '" + a.mesh +
-                    "' has " + std::to_string(n) + " vertices" +
+  throw Usage_error(what + " " + std::to_string(index) + " is out of range: '" + a.mesh + "' has " +
+                    std::to_string(n) + " vertices" +
                     (n ? " (0 to " + std::to_string(n - 1) + ")" : ""));
 }
 
@@ -289,38 +496,34 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
       expmap::IO::write_svg(out, mesh, run.map, options);
       break;
     }
+    case expmap_cli::Output_format::npz:  // refused by parse_compute_arguments
+      break;
   }
   out.close();
   if (!out) throw Runtime_error("could not write all of '" + output.path + "'");
 }
 
-int compute(const std::vector<std::string>& args) {
-  const Compute_arguments a = expmap_cli::parse_compute_arguments(args);
-  if (a.help) {
-    std::cout << compute_help();
-    return 0;
-  }
+// The method asked for, after the checks both commands make before the
+// costly part: its settings apply to it, and the outputs' folders exist.
+const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
   if (!method.takes_heat_options && (a.time_factor || a.laplacian || a.angles))
     throw Usage_error("--time-factor, --laplacian and --angles apply only to --method heat");
-
-  // Fail before the costly part, not after it.
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))
       throw Runtime_error("cannot write '" + output.path + "': folder '" + parent.string() +
                           "' does not exist");
   }
+  return method;
+}
 
-  const Input input = read_mesh(a);
-  const Mesh& mesh = input.mesh;
-  const Mesh::Vertex_index source = find_source(a, input);
-  expmap::Query_options query;
-  query.reference_direction = a.reference;
-
-  Run run;
+// Runs `f`, adding to the library's complaint about a degenerate face how
+// to get past it.
+template <class F>
+auto with_repair_hint(const Compute_arguments& a, F f) -> decltype(f()) {
   try {
-    run = method.run(mesh, a, source, make_patch(a), query);
+    return f();
   } catch (const expmap::Invalid_input& e) {
     // The library names the face; the program knows the option that helps.
     if (!a.repair && std::string(e.what()).find("degenerate") != std::string::npos)
@@ -328,14 +531,43 @@ int compute(const std::vector<std::string>& args) {
                           " (or run expmap with --repair to remove degenerate faces and needles)");
     throw;
   }
+}
+
+void print_mesh_summary(const Compute_arguments& a, const Mesh& mesh) {
+  std::printf("mesh:        %s: %zu vertices, %zu faces\n", a.mesh.c_str(),
+              static_cast<std::size_t>(num_vertices(mesh)),
+              static_cast<std::size_t>(num_faces(mesh)));
+}
+
+// What every command does first: parse (or print help), check the method
+// and the outputs, read the mesh; then `command(arguments, method, input)`.
+template <class Arguments, class Command>
+int run_command(const std::vector<std::string>& args, Arguments (*parse)(const std::vector<std::string>&),
+                std::string (*help)(), Command command) {
+  const Arguments a = parse(args);
+  if (a.help) {
+    std::cout << help();
+    return 0;
+  }
+  const Method& method = checked_method(a);
+  const Input input = read_mesh(a);
+  return command(a, method, input);
+}
+
+int compute(const Compute_arguments& a, const Method& method, const Input& input) {
+  const Mesh& mesh = input.mesh;
+  const Mesh::Vertex_index source =
+      find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a);
+  expmap::Query_options query;
+  query.reference_direction = a.reference;
+
+  Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
 
   const auto folds = expmap::count_flipped_triangles(mesh, run.map);
   const double max_r =
       run.map.size() ? *std::max_element(run.map.distance.begin(), run.map.distance.end()) : 0.0;
-  std::printf("mesh:        %s: %zu vertices, %zu faces\n", a.mesh.c_str(),
-              static_cast<std::size_t>(num_vertices(mesh)),
-              static_cast<std::size_t>(num_faces(mesh)));
+  print_mesh_summary(a, mesh);
   std::printf("method:      %s\n", run.description.c_str());
   std::printf("precompute:  %.3f s\n", run.precompute_seconds);
   std::printf("query:       %.3f ms\n", 1e3 * run.query_seconds);
@@ -348,6 +580,80 @@ int compute(const std::vector<std::string>& args) {
     std::printf("wrote:       %s\n", output.path.c_str());
   }
   return 0;
+}
+
+// The sources in a file: indices separated by white space or commas, '#'
+// to the end of a line a comment.
+std::vector<std::size_t> read_source_file(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw Runtime_error("cannot open source file '" + path + "' (missing or not readable)");
+  std::vector<std::size_t> sources;
+  std::size_t line_number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++line_number;
+    line = line.substr(0, line.find('#'));
+    std::replace(line.begin(), line.end(), ',', ' ');
+    std::istringstream words(line);
+    for (std::string word; words >> word;) {
+      try {
+        sources.push_back(expmap_cli::parse_index("a source", word));
+      } catch (const Usage_error&) {
+        throw Runtime_error("source file '" + path + "', line " + std::to_string(line_number) +
+                            ": '" + word + "' is not a vertex index (a non-negative integer)");
+      }
+    }
+  }
+  if (sources.empty()) throw Runtime_error("source file '" + path + "' lists no vertex");
+  return sources;
+}
+
+// The sources of a batch as mesh vertex indices, from file indices that
+// must all be in range; "all" is every vertex of the file in file order
+// but those --repair removed and isolated ones, which have no map.
+std::vector<std::size_t> batch_sources(const Batch_arguments& a, const Input& input) {
+  using Kind = expmap_cli::Source_selection::Kind;
+  const std::vector<std::size_t> mesh_vertex = mesh_vertex_of_file_vertex(input);
+  std::vector<std::size_t> sources;
+  if (a.sources.kind == Kind::all) {
+    for (std::size_t v : mesh_vertex)
+      if (v != removed_vertex && !input.mesh.is_isolated(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))))
+        sources.push_back(v);
+    return sources;
+  }
+  for (std::size_t s : a.sources.kind == Kind::list ? a.sources.list : read_source_file(a.sources.file))
+    sources.push_back(static_cast<std::size_t>(find_file_vertex("--sources: vertex", s, mesh_vertex, a)));
+  return sources;
+}
+
+int batch(const Batch_arguments& a, const Method& method, const Input& input) {
+  const Mesh& mesh = input.mesh;
+  const std::vector<std::size_t> sources = batch_sources(a, input);
+  expmap::Query_options query;
+  query.reference_direction = a.reference;
+
+  Batch_output output(a.outputs, input.report.file_index);
+  Batch_run run = with_repair_hint(
+      a, [&] { return method.run_many(mesh, a, sources, make_patch(a), query, output); });
+  output.finish();
+  if (run.description.empty()) run.description = method.description;
+
+  const std::size_t maps = sources.size() - run.errors.size();
+  print_mesh_summary(a, mesh);
+  std::printf("method:      %s\n", run.description.c_str());
+  std::printf("precompute:  %.3f s\n", run.precompute_seconds);
+  std::printf("maps:        %zu of %zu sources in %.3f s on %u threads, %.1f maps/s\n", maps,
+              sources.size(), run.batch_seconds,
+              a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency()),
+              run.batch_seconds > 0 ? static_cast<double>(sources.size()) / run.batch_seconds : 0.0);
+  std::printf("rows:        %zu (%.1f patch vertices per map)\n", run.rows,
+              maps ? static_cast<double>(run.rows) / static_cast<double>(maps) : 0.0);
+  for (const auto& out : a.outputs) std::printf("wrote:       %s\n", out.path.c_str());
+  if (run.errors.empty()) return 0;
+  std::fflush(stdout);
+  for (const std::string& e : run.errors) std::cerr << "expmap: warning: " << e << "\n";
+  std::cerr << "expmap: error: " << run.errors.size() << " of " << sources.size()
+            << " sources failed (see the warnings above); the other maps were written\n";
+  return 1;
 }
 
 int fail(const std::string& message, int status) {
@@ -363,12 +669,16 @@ int main(int argc, char** argv) {
   try {
     if (args.empty()) throw Usage_error("no command given (see expmap --help)");
     if (args[0] == "-h" || args[0] == "--help") {
-      std::cout << general_help() << "\nSee 'expmap compute --help' for the options.\n";
+      std::cout << general_help()
+                << "\nSee 'expmap compute --help' and 'expmap batch --help' for the options.\n";
       return 0;
     }
-    if (args[0] != "compute")
-      throw Usage_error("unknown command '" + args[0] + "' (see expmap --help)");
-    return compute(std::vector<std::string>(args.begin() + 1, args.end()));
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (args[0] == "compute")
+      return run_command(rest, expmap_cli::parse_compute_arguments, compute_help, compute);
+    if (args[0] == "batch")
+      return run_command(rest, expmap_cli::parse_batch_arguments, batch_help, batch);
+    throw Usage_error("unknown command '" + args[0] + "' (see expmap --help)");
   } catch (const Usage_error& e) {
     return fail(e.what(), 2);
   } catch (const std::bad_alloc&) {

@@ -234,4 +234,179 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
 
 BOOST_AUTO_TEST_SUITE_END()
 
+// `expmap batch`: many sources in one run, judged against `expmap compute`
+// run once per source.
+BOOST_FIXTURE_TEST_SUITE(batch_command, Cli_fixture)
+
+// The rows of a CSV file without its header.
+std::vector<std::string> csv_rows(const fs::path& path) {
+  std::vector<std::string> lines = read_lines(path);
+  if (!lines.empty()) lines.erase(lines.begin());
+  return lines;
+}
+
+BOOST_AUTO_TEST_CASE(rows_equal_one_compute_per_source) {
+  for (const char* method : {"heat", "dem", "dgpc", "exact"}) {
+    BOOST_TEST_CONTEXT("--method " << method) {
+      const int status = run("batch " + file("grid.off") + " --sources 24,0,24,48 --vertices 10" +
+                             " --method " + method + " --threads 2 -o " + file("batch.csv"));
+      BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
+      BOOST_TEST(err().empty(), err());  // no progress bar when stderr is not a terminal
+      const auto lines = read_lines(dir / "batch.csv");
+      BOOST_TEST_REQUIRE(lines.size() == 41u);
+      BOOST_TEST(lines[0] == "source,vertex,r,theta,u,v");
+      std::size_t row = 1;
+      for (const char* source : {"24", "0", "24", "48"}) {
+        BOOST_TEST_REQUIRE(run("compute " + file("grid.off") + " --source " + source +
+                               " --vertices 10 --method " + method + " -o " + file("one.csv")) == 0);
+        for (const std::string& expected : csv_rows(dir / "one.csv"))
+          BOOST_TEST(lines[row++] == std::string(source) + "," + expected);
+      }
+    }
+  }
+}
+
+BOOST_AUTO_TEST_CASE(threads_do_not_change_the_output) {
+  const std::string command = "batch " + file("grid.off") + " --sources all --fraction 0.3";
+  BOOST_TEST_REQUIRE(run(command + " --threads 1 -o " + file("one.csv")) == 0, err());
+  BOOST_TEST_REQUIRE(run(command + " --threads 2 -o " + file("two.csv")) == 0, err());
+  BOOST_TEST(read_text(dir / "one.csv") == read_text(dir / "two.csv"));
+  BOOST_TEST(read_lines(dir / "one.csv").size() == 1u + 49u * 15u);  // ceil(0.3 * 49) each
+}
+
+BOOST_AUTO_TEST_CASE(sources_from_a_file) {
+  std::ofstream(dir / "sources.txt") << "# centre and corners\n24, 0\n6 48  # last\n\n";
+  BOOST_TEST_REQUIRE(run("batch " + file("grid.off") + " --sources @" + file("sources.txt") +
+                         " --vertices 3 -o " + file("b.csv")) == 0,
+                     err());
+  std::vector<std::string> sources;
+  for (const std::string& row : csv_rows(dir / "b.csv")) sources.push_back(row.substr(0, row.find(',')));
+  BOOST_TEST((sources == std::vector<std::string>{"24", "24", "24", "0", "0", "0", "6", "6", "6",
+                                                  "48", "48", "48"}));
+}
+
+// An isolated vertex has no map: a warning names it, the other maps are
+// written, and the exit status says that something failed.
+BOOST_AUTO_TEST_CASE(a_failed_source_costs_only_its_map) {
+  {
+    std::ofstream out(dir / "lonely.off");
+    out << "OFF\n5 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n9 9 9\n3 0 1 3\n3 0 3 2\n";
+  }
+  const int status = run("batch " + file("lonely.off") + " --sources 0,4,3 --vertices 4 -o " +
+                         file("b.csv") + " -o " + file("b.npz"));
+  BOOST_TEST(status == 1);
+  const std::vector<std::string> errors = read_lines(dir / "stderr.txt");
+  BOOST_TEST_REQUIRE(errors.size() == 2u, err());
+  BOOST_TEST(errors[0].rfind("expmap: warning: source vertex 4 ", 0) == 0, errors[0]);
+  BOOST_TEST(errors[1].rfind("expmap: error: 1 of 3 sources failed", 0) == 0, errors[1]);
+  std::vector<std::string> sources;
+  for (const std::string& row : csv_rows(dir / "b.csv")) sources.push_back(row.substr(0, row.find(',')));
+  BOOST_TEST((sources == std::vector<std::string>{"0", "0", "0", "0", "3", "3", "3", "3"}));
+  BOOST_TEST(fs::exists(dir / "b.npz"));
+
+  // "all" means every vertex with a face.
+  BOOST_TEST(run("batch " + file("lonely.off") + " --sources all --vertices 2 -o " + file("a.csv")) == 0,
+             err());
+  BOOST_TEST(csv_rows(dir / "a.csv").size() == 8u);
+}
+
+// A stored zip: local header first, end-of-directory record last.
+BOOST_AUTO_TEST_CASE(writes_npz) {
+  BOOST_TEST_REQUIRE(run("batch " + file("grid.off") + " --sources 1,2 --radius 1.5 -o " +
+                         file("b.npz")) == 0,
+                     err());
+  const std::string npz = read_text(dir / "b.npz");
+  BOOST_TEST_REQUIRE(npz.size() > 22u);
+  BOOST_TEST(npz.substr(0, 4) == std::string("PK\x03\x04", 4));
+  BOOST_TEST(npz.substr(npz.size() - 22, 4) == std::string("PK\x05\x06", 4));
+  for (const char* name : {"sources.npy", "offsets.npy", "vertex.npy", "r.npy", "theta.npy", "u.npy",
+                           "v.npy"})
+    BOOST_TEST(npz.find(name) != std::string::npos, name);
+}
+
+// Reading may renumber the mesh (a non-manifold vertex split into copies
+// added at the end, --repair removing vertices); `batch`, like `compute`,
+// speaks of the file's vertices in --sources and in both columns.
+BOOST_AUTO_TEST_CASE(indices_are_the_files_when_reading_renumbers) {
+  std::ofstream(dir / "bowtie.off") << "OFF\n7 4 0\n0 0 0\n1 0 0\n1 1 0.1\n0 1 0\n-1 0 0\n"
+                                       "-1 -1 0.1\n0 -1 0\n3 0 1 2\n3 0 2 3\n3 0 4 5\n3 0 5 6\n";
+  // Vertex 1 sits 1e-7 from vertex 0: --repair collapses the needles and
+  // removes it, so mesh vertex 1 is file vertex 2.
+  std::ofstream(dir / "needle.off") << "OFF\n6 5 0\n0 0 0\n1e-7 0 0\n2 0 0\n2 2 0\n0 2 0\n"
+                                       "1 3 0\n3 0 1 3\n3 1 2 3\n3 0 3 4\n3 4 3 5\n3 0 4 1\n";
+  const std::string bowtie = file("bowtie.off"), needle = file("needle.off") + " --repair";
+  for (const std::string& mesh_and_flags : {bowtie, needle}) {
+    BOOST_TEST_CONTEXT(mesh_and_flags) {
+      const std::string patch = " --vertices 3 " + mesh_and_flags;
+      BOOST_TEST_REQUIRE(run("batch " + patch + " --sources all -o " + file("b.csv")) == 0, err());
+      BOOST_TEST(err().rfind("expmap: note: ", 0) == 0, err());  // reading did change the mesh
+      const auto rows = csv_rows(dir / "b.csv");
+      std::vector<std::string> sources;
+      for (const std::string& row : rows) {
+        const std::string source = row.substr(0, row.find(','));
+        if (sources.empty() || sources.back() != source) sources.push_back(source);
+      }
+      // "all" is every file vertex once: the bow tie's pinch vertex 0 and its
+      // copy are both file vertex 0; the removed needle vertex is left out.
+      const auto expected = mesh_and_flags == bowtie
+                                ? std::vector<std::string>{"0", "1", "2", "3", "4", "5", "6"}
+                                : std::vector<std::string>{"0", "2", "3", "4", "5"};
+      BOOST_TEST(sources == expected);
+      std::size_t row = 0;
+      for (const std::string& source : sources) {
+        BOOST_TEST_REQUIRE(
+            run("compute " + patch + " --source " + source + " -o " + file("one.csv")) == 0, err());
+        for (const std::string& one : csv_rows(dir / "one.csv"))
+          BOOST_TEST(rows.at(row++) == source + "," + one);
+      }
+      BOOST_TEST(row == rows.size());
+      // After the note on reading, the error (so not check_error).
+      BOOST_TEST(run("batch " + patch + " --sources 2,8 -o " + file("a.csv")) == 2);
+      BOOST_TEST(err().find("expmap: error: --sources: vertex 8 is out of range") != std::string::npos,
+                 err());  // 7 and 6 vertices in the files
+    }
+  }
+  BOOST_TEST(run("batch " + needle + " --vertices 3 --sources 0,1 -o " + file("a.csv")) == 1);
+  BOOST_TEST(err().find("expmap: error: --sources: vertex 1 was removed by --repair") !=
+                 std::string::npos,
+             err());
+  BOOST_TEST(!fs::exists(dir / "a.csv"));
+}
+
+BOOST_AUTO_TEST_CASE(help_documents_every_option) {
+  BOOST_TEST_REQUIRE(run("batch --help") == 0);
+  const std::string help = out();
+  for (const char* option :
+       {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
+        "--time-factor", "--laplacian", "--angles", "--near-source-blend", "--reference",
+        "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
+    BOOST_TEST(help.find(option) != std::string::npos, option);
+  BOOST_TEST_REQUIRE(run("--help") == 0);
+  BOOST_TEST(out().find("batch") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(errors_leave_no_output) {
+  const std::string grid = "batch " + file("grid.off");
+  const std::string csv = " -o " + file("a.csv");
+  check_error(grid + " --vertices 10" + csv, 2);                      // no --sources
+  check_error(grid + " --sources 1,,2 --vertices 10" + csv, 2);
+  check_error(grid + " --sources -1 --vertices 10" + csv, 2);
+  check_error(grid + " --sources 3,49 --vertices 10" + csv, 2);       // out of range
+  check_error(grid + " --sources all --vertices 10 --threads many" + csv, 2);
+  check_error(grid + " --sources all --vertices 10 -o " + file("a.obj"), 2);
+  check_error(grid + " --sources all --vertices 10 --source 3" + csv, 2);
+  check_error(grid + " --sources @ --vertices 10" + csv, 2);
+  check_error(grid + " --sources @" + file("missing.txt") + " --vertices 10" + csv, 1);
+  std::ofstream(dir / "bad.txt") << "1 2\nthree\n";
+  check_error(grid + " --sources @" + file("bad.txt") + " --vertices 10" + csv, 1);
+  BOOST_TEST(err().find("line 2") != std::string::npos, err());
+  check_error("batch " + file("quads.off") + " --sources all --vertices 3 --no-triangulate" + csv, 1);
+  BOOST_TEST(err().find("more than three vertices") != std::string::npos, err());
+  check_error("compute " + file("grid.off") + " --source 0 --vertices 3 -o " + file("a.npz"), 2);
+  BOOST_TEST(!fs::exists(dir / "a.csv"));
+  BOOST_TEST(!fs::exists(dir / "a.npz"));
+}
+
+BOOST_AUTO_TEST_SUITE_END()
+
 #endif  // EXPMAP_CLI_PATH
