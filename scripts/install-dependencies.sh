@@ -6,7 +6,9 @@ if [ "$(id -u)" -ne 0 ]; then exec sudo "$0" "$@"; fi
 export DEBIAN_FRONTEND=noninteractive
 packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
-          libboost-graph-dev libboost-test-dev)
+          libboost-graph-dev libboost-test-dev
+          # The Python module, its tests and its Dask layer (python/, test/python/).
+          python3-dev python3-numpy pybind11-dev python3-pytest python3-distributed)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

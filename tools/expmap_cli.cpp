@@ -7,6 +7,7 @@
 // stderr starting with "expmap: error: ".
 
 #include "Command_line.h"
+#include "Mesh_file.h"
 
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Errors.h>
@@ -20,10 +21,6 @@
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Surface_mesh.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -40,7 +37,7 @@
 
 namespace {
 
-using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+using expmap_cli::Mesh;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
 using expmap_cli::Compute_arguments;
 using expmap_cli::Usage_error;
@@ -211,19 +208,7 @@ std::string compute_help() {
 }
 
 Mesh read_mesh(const Compute_arguments& a) {
-  if (!std::ifstream(a.mesh))
-    throw Runtime_error("cannot open mesh file '" + a.mesh + "' (missing or not readable)");
-  Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(a.mesh, mesh))
-    throw Runtime_error("cannot read '" + a.mesh +
-                        "' as a polygon mesh: the format is not .off, .obj, .ply or .stl, the "
-                        "file is malformed, or its faces do not form a consistently oriented "
-                        "2-manifold mesh");
-  if (a.triangulate && !CGAL::is_triangle_mesh(mesh) &&
-      !CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
-    throw Runtime_error("--triangulate could not split every face of '" + a.mesh +
-                        "' into triangles");
-  return mesh;
+  return expmap_cli::read_mesh_file(a.mesh, a.triangulate);
 }
 
 expmap::Patch make_patch(const Compute_arguments& a) {
