@@ -196,32 +196,38 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
 
     work = as_completed(prepared, with_results=True)
     prepared_mesh = {f.key: m for f, m in zip(prepared, meshes)}
-    for future, result in work:
-        if future.key in prepared_mesh:
-            mesh = prepared_mesh[future.key]
-            n, address = result
-            chosen = np.arange(n, dtype=np.int64) if isinstance(sources, str) else np.asarray(sources[mesh])
-            if chosen.ndim != 1:
-                raise ValueError("the sources of %s must be a 1-D list of vertex indices" % mesh)
-            pieces = [chosen[i:i + chunk_size] for i in range(0, len(chosen), chunk_size)]
-            chunks_of[mesh] = len(pieces)
-            done[mesh] = {}
-            total_chunks += len(pieces)
-            if not pieces:
-                done[mesh][0] = _empty_chunk()
-                chunks_of[mesh] = 1
+    try:
+        for future, result in work:
+            if future.key in prepared_mesh:
+                mesh = prepared_mesh[future.key]
+                n, address = result
+                chosen = np.arange(n, dtype=np.int64) if isinstance(sources, str) else np.asarray(sources[mesh])
+                if chosen.ndim != 1:
+                    raise ValueError("the sources of %s must be a 1-D list of vertex indices" % mesh)
+                pieces = [chosen[i:i + chunk_size] for i in range(0, len(chosen), chunk_size)]
+                chunks_of[mesh] = len(pieces)
+                done[mesh] = {}
+                total_chunks += len(pieces)
+                if not pieces:
+                    done[mesh][0] = _empty_chunk()
+                    chunks_of[mesh] = 1
+                    finish(mesh)
+                for number, piece in enumerate(pieces):
+                    f = client.submit(_map_chunk, mesh, method, options, patch, piece,
+                                      workers=[address], allow_other_workers=True, pure=False)
+                    chunk_futures[f.key] = (mesh, number)
+                    work.add(f)
+                continue
+            mesh, number = chunk_futures.pop(future.key)
+            done[mesh][number] = result
+            finished_chunks += 1
+            if progress is not None:
+                progress(finished_chunks, total_chunks)
+            if len(done[mesh]) == chunks_of[mesh]:
                 finish(mesh)
-            for number, piece in enumerate(pieces):
-                f = client.submit(_map_chunk, mesh, method, options, patch, piece,
-                                  workers=[address], allow_other_workers=True, pure=False)
-                chunk_futures[f.key] = (mesh, number)
-                work.add(f)
-            continue
-        mesh, number = chunk_futures.pop(future.key)
-        done[mesh][number] = result
-        finished_chunks += 1
-        if progress is not None:
-            progress(finished_chunks, total_chunks)
-        if len(done[mesh]) == chunks_of[mesh]:
-            finish(mesh)
+    except BaseException:
+        # A mesh that could not be read or mapped (or an interrupt): stop
+        # what is still queued instead of leaving it to run for nobody.
+        client.cancel(list(prepared) + list(work.futures))
+        raise
     return {mesh: results[mesh] for mesh in meshes}

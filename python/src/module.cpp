@@ -89,9 +89,18 @@ expmap::Patch patch_argument(std::size_t mesh_vertices, std::optional<double> ra
   return expmap::Patch::vertex_set(std::vector<std::size_t>(set.data(), set.data() + set.size()));
 }
 
-expmap::Query_options query_argument(std::optional<std::array<double, 3>> reference) {
+/// The query options from `reference`: None or 3 numbers (the library
+/// checks that they are finite and not along the normal).
+expmap::Query_options query_argument(py::handle reference) {
   expmap::Query_options query;
-  query.reference_direction = reference;
+  if (reference.is_none()) return query;
+  py::array array = py::array::ensure(reference);
+  if (!array || array.ndim() != 1 || array.shape(0) != 3 ||
+      std::string("iuf").find(array.dtype().kind()) == std::string::npos)
+    throw expmap::Invalid_input("reference must be 3 numbers (got " +
+                                py::repr(reference).cast<std::string>() + ")");
+  const Real_array xyz = Real_array::ensure(array);
+  query.reference_direction = std::array<double, 3>{{xyz.at(0), xyz.at(1), xyz.at(2)}};
   return query;
 }
 
@@ -128,7 +137,7 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute",
       [](const Bound& b, py::handle source, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         std::optional<std::array<double, 3>> reference) {
+         py::handle reference) {
         const std::size_t s = index_argument(source, "source");
         const expmap::Patch patch =
             patch_argument(b.method->number_of_vertices(), radius, fraction, vertices, vertex_set);
@@ -156,7 +165,7 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         std::optional<std::array<double, 3>> reference, py::handle threads_object) {
+         py::handle reference, py::handle threads_object) {
         const std::size_t n = b.method->number_of_vertices();
         const Index_array checked = checked_indices(sources_object, "sources", n);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
@@ -345,7 +354,10 @@ PYBIND11_MODULE(_expmap, m) {
 
   m.def(
       "read_mesh",
-      [](const std::string& path, bool triangulate) {
+      [](py::handle path_object, bool triangulate) {
+        // str, bytes or any os.PathLike (pathlib.Path).
+        const std::string path =
+            py::module_::import("os").attr("fsdecode")(path_object).cast<std::string>();
         Mesh mesh;
         {
           py::gil_scoped_release release;

@@ -64,6 +64,13 @@ def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path):
                 loaded[mesh] = {name: npz[name] for name in npz.files}
         assert_same_as_single_process(loaded, meshes_and_sources)
 
+        # Errors on a worker come back as the library's exceptions.
+        elephant = list(meshes_and_sources)[0]
+        with pytest.raises(OSError, match="cannot open"):
+            expmap.dask.map_meshes(client, [str(tmp_path / "missing.off")], vertices=5)
+        with pytest.raises(ValueError, match="out of range"):
+            expmap.dask.map_meshes(client, [elephant], sources={elephant: [0, 10**6]}, vertices=5)
+
 
 def test_worker_killed_mid_run_loses_and_duplicates_nothing(meshes_and_sources):
     with local_cluster() as cluster, distributed.Client(cluster, timeout=120) as client:

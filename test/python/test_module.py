@@ -158,6 +158,9 @@ def test_bad_queries_raise_value_error(cactus, method):
         ((0,), {"vertices": 0}), ((0,), {"vertices": -3}),
         ((0,), {"vertex_set": []}), ((0,), {"vertex_set": [n]}), ((0,), {"vertex_set": [-1]}),
         ((0,), {"vertex_set": [[1, 2]]}), ((0,), {"vertex_set": [0.5]}),
+        ((0,), {"vertices": 5, "reference": [0, 0, 0]}),
+        ((0,), {"vertices": 5, "reference": [np.nan, 1, 0]}),
+        ((0,), {"vertices": 5, "reference": [1, 0]}), ((0,), {"vertices": 5, "reference": "x"}),
     ]
     for args, kwargs in bad_queries:
         with pytest.raises(ValueError):
@@ -183,7 +186,7 @@ def test_read_mesh_errors(tmp_path):
     quad.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
     with pytest.raises(ValueError, match="not a triangle"):
         expmap.read_mesh(str(quad))
-    V, F = expmap.read_mesh(str(quad), triangulate=True)
+    V, F = expmap.read_mesh(quad, triangulate=True)  # any os.PathLike
     assert V.shape == (4, 3) and F.shape == (2, 3)
 
 
