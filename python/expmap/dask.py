@@ -176,14 +176,27 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
             raise ValueError("out_dir %r is not a folder" % (out_dir,))
         npz_paths = _npz_paths(meshes, out_dir)
 
-    # Precompute every mesh somewhere; its chunks go where that happened.
-    prepared = client.map(_prepare, meshes, method=method, options=options, pure=False)
-    chunk_futures = {}  # future -> (mesh, chunk number)
+    # Meshes are precomputed a few at a time (one per worker), the next when
+    # one is done: all at once, a worker would precompute more meshes than
+    # its cache holds before mapping any, and then precompute them again.
+    waiting = list(reversed(meshes))
+    in_flight = max(1, len(client.scheduler_info().get("workers", {})))
+    prepared_mesh = {}  # future key -> mesh
+    chunk_futures = {}  # future key -> (mesh, chunk number)
     chunks_of = {}
     done = {}
     results = {}
     total_chunks = 0
     finished_chunks = 0
+    work = as_completed(with_results=True)
+
+    def prepare_next():
+        if waiting:
+            mesh = waiting.pop()
+            # Ahead of queued chunks, so a worker that finished a mesh starts the next.
+            f = client.submit(_prepare, mesh, method, options, pure=False, priority=10)
+            prepared_mesh[f.key] = mesh
+            work.add(f)
 
     def finish(mesh):
         arrays = _concatenate([done[mesh][i] for i in range(chunks_of[mesh])])
@@ -193,13 +206,14 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
         else:
             np.savez(npz_paths[mesh], **arrays)
             results[mesh] = npz_paths[mesh]
+        prepare_next()
 
-    work = as_completed(prepared, with_results=True)
-    prepared_mesh = {f.key: m for f, m in zip(prepared, meshes)}
+    for _ in range(in_flight):
+        prepare_next()
     try:
         for future, result in work:
             if future.key in prepared_mesh:
-                mesh = prepared_mesh[future.key]
+                mesh = prepared_mesh.pop(future.key)
                 n, address = result
                 chosen = np.arange(n, dtype=np.int64) if isinstance(sources, str) else np.asarray(sources[mesh])
                 if chosen.ndim != 1:
@@ -228,6 +242,6 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     except BaseException:
         # A mesh that could not be read or mapped (or an interrupt): stop
         # what is still queued instead of leaving it to run for nobody.
-        client.cancel(list(prepared) + list(work.futures))
+        client.cancel(list(work.futures))
         raise
     return {mesh: results[mesh] for mesh in meshes}
