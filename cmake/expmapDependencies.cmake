@@ -9,3 +9,5 @@ find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CHOLMOD)
 find_dependency(METIS)
 find_dependency(Boost 1.66)
+# compute_many() runs queries on std::thread.
+find_dependency(Threads)

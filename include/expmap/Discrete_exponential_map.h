@@ -8,11 +8,10 @@
 /// the robust form of Schmidt (2010): a baseline of the package.
 
 #include <expmap/Errors.h>
-#include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Fibonacci_dijkstra.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -21,10 +20,6 @@
 #include <expmap/internal/Workspace_pool.h>
 
 #include <CGAL/Default.h>
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/boost/graph/properties.h>
-
-#include <boost/graph/graph_traits.hpp>
 
 #include <array>
 #include <cmath>
@@ -87,44 +82,31 @@ namespace expmap {
 /// \endcode
 /// \sa `Heat_exponential_map`, `Geodesic_polar_coordinates`, `Exact_exponential_map`
 template <class TriangleMesh, class VertexPointMap = CGAL::Default>
-class Discrete_exponential_map {
+class Discrete_exponential_map
+    : public internal::Method_front<Discrete_exponential_map<TriangleMesh, VertexPointMap>,
+                                    TriangleMesh, VertexPointMap> {
+  using Front = internal::Method_front<Discrete_exponential_map, TriangleMesh, VertexPointMap>;
+
  public:
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map =
-      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
-  using Result = Local_map<vertex_descriptor>;
+  using typename Front::Result;
 
   /// Bound assumed on (Dijkstra distance) / (geodesic distance); see the guard.
   static constexpr double dilation_bound = 2.0;
 
-  /// Copies the mesh and computes a tangent frame per vertex.
-  /// \throws Invalid_input for meshes that cannot be used (empty, not
-  ///         triangulated, degenerate faces, non-finite coordinates).
-  explicit Discrete_exponential_map(const TriangleMesh& tm)
-      : Discrete_exponential_map(tm, get(CGAL::vertex_point, tm)) {}
+  /// Built from a mesh `tm` and optionally its vertex point map `vpm`:
+  /// `(tm)` or `(tm, vpm)`; copies the mesh and computes a tangent frame per
+  /// vertex. See `internal::Method_front`.
+  using Front::Front;
 
-  /// As above, with an explicit vertex point map.
-  Discrete_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_indexed(tm, vpm) {
-    m_frames = internal::vertex_tangent_frames(m_indexed.arrays);
-  }
-
-  /// Polar coordinates around `source` for the vertices of `patch`.
-  /// \pre `source` is a vertex of the mesh given to the constructor.
-  /// \throws Invalid_input if the source is isolated, the reference
-  ///         direction is parallel to its normal, or the patch names
-  ///         vertices out of range or outside the source's component.
-  Result compute(vertex_descriptor source, const Patch& patch,
-                 const Query_options& query = {}) const {
-    return compute_by_index(m_indexed.index_of(source), patch, query);
-  }
-
-  /// As `compute()`, with the source given by its index in `vertices(tm)`.
-  /// \throws Invalid_input as `compute()`, and if the index is out of range.
+  /// Polar coordinates around the vertex of index `source` in
+  /// `vertices(tm)` for the vertices of `patch`; `compute()` takes a vertex
+  /// descriptor, `compute_many()` and `compute_many_by_index()` many sources.
+  /// \throws Invalid_input if the index is out of range, the source is
+  ///         isolated, the reference direction is parallel to its normal,
+  ///         or the patch names vertices out of range or outside the
+  ///         source's component.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
-
-  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   struct Workspace {
@@ -141,8 +123,9 @@ class Discrete_exponential_map {
                                        const internal::Tangent_frame& frame,
                                        const Workspace& ws) const;
 
-  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
-  internal::Vertex_tangent_frames m_frames;
+  using Front::m_indexed;
+  // Computed by every constructor, after the mesh is copied.
+  internal::Vertex_tangent_frames m_frames = internal::vertex_tangent_frames(m_indexed.arrays);
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -196,49 +179,45 @@ template <class TM, class VPM>
 typename Discrete_exponential_map<TM, VPM>::Result
 Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                      const Query_options& query) const {
-  const int s = internal::checked_source(m_indexed.arrays, source_index);
-  std::optional<internal::Vector3> reference;
-  if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
-  const Patch::Kind kind = patch.kind();
-  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
-  std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
+  const internal::Checked_query q =
+      internal::checked_query(m_indexed.arrays, source_index, patch, query);
+  const int s = q.source;
 
-  auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(number_of_vertices()); });
+  auto ws = m_workspaces.acquire(
+      [this] { return std::make_unique<Workspace>(this->number_of_vertices()); });
   ws->wanted.next_query();
-  for (int v : wanted) ws->wanted.mark(v, 0);
-  std::size_t missing = wanted.size();
+  for (int v : q.wanted) ws->wanted.mark(v, 0);
+  std::size_t missing = q.wanted.size();
   const double search_radius =
-      kind == Patch::Kind::geodesic_radius ? dilation_bound * patch.radius()
+      q.kind == Patch::Kind::geodesic_radius ? dilation_bound * patch.radius()
                                            : std::numeric_limits<double>::infinity();
 
   internal::fibonacci_dijkstra(m_indexed.arrays, s, ws->dijkstra, [&](int v, double d) {
     if (d > search_radius) return false;
-    if ((kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction) &&
-        ws->dijkstra.order.size() >= target)
+    if ((q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction) &&
+        ws->dijkstra.order.size() >= q.target)
       return false;
-    if (kind == Patch::Kind::vertex_set && missing == 0) return false;
+    if (q.kind == Patch::Kind::vertex_set && missing == 0) return false;
     if (v == s) {
       ws->u[v] = {{0.0, 0.0}};
       ws->turn[v] = {{1.0, 0.0}};
     } else {
-      ws->turn[v] = internal::frame_rotation(m_frames.normal[v], m_frames.e1[v], frame);
-      ws->u[v] = upwind_average(v, d, s, frame, *ws);
+      ws->turn[v] = internal::frame_rotation(m_frames.normal[v], m_frames.e1[v], q.frame);
+      ws->u[v] = upwind_average(v, d, s, q.frame, *ws);
     }
-    if (kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v)) --missing;
+    if (q.kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v)) --missing;
     return true;
   });
 
   ws->entries.clear();
   for (int v : ws->dijkstra.order) {
     if (v == s) continue;
-    if (kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
+    if (q.kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
     const double r = std::hypot(ws->u[v][0], ws->u[v][1]);
-    if (kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
+    if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
 }
 
 }  // namespace expmap

@@ -8,11 +8,10 @@
 /// `CGAL::Surface_mesh_shortest_path`: the reference of the package.
 
 #include <expmap/Errors.h>
-#include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Geodesic_ball_submesh.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -25,10 +24,6 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_shortest_path.h>
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/boost/graph/properties.h>
-
-#include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -78,40 +73,27 @@ namespace expmap {
 /// \endcode
 /// \sa `Heat_exponential_map`, `Discrete_exponential_map`, `Geodesic_polar_coordinates`
 template <class TriangleMesh, class VertexPointMap = CGAL::Default>
-class Exact_exponential_map {
+class Exact_exponential_map
+    : public internal::Method_front<Exact_exponential_map<TriangleMesh, VertexPointMap>,
+                                    TriangleMesh, VertexPointMap> {
+  using Front = internal::Method_front<Exact_exponential_map, TriangleMesh, VertexPointMap>;
+
  public:
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map =
-      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
-  using Result = Local_map<vertex_descriptor>;
+  using typename Front::Result;
 
-  /// Copies the mesh.
-  /// \throws Invalid_input for meshes that cannot be used (empty, not
-  ///         triangulated, degenerate faces, non-finite coordinates).
-  explicit Exact_exponential_map(const TriangleMesh& tm)
-      : Exact_exponential_map(tm, get(CGAL::vertex_point, tm)) {}
+  /// Built from a mesh `tm` and optionally its vertex point map `vpm`:
+  /// `(tm)` or `(tm, vpm)`; see `internal::Method_front`.
+  using Front::Front;
 
-  /// As above, with an explicit vertex point map.
-  Exact_exponential_map(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_indexed(tm, vpm) {
-  }
-
-  /// Polar coordinates around `source` for the vertices of `patch`.
-  /// \pre `source` is a vertex of the mesh given to the constructor.
-  /// \throws Invalid_input if the source is isolated, the reference
-  ///         direction is parallel to its normal, or the patch names
-  ///         vertices out of range or outside the source's component.
-  Result compute(vertex_descriptor source, const Patch& patch,
-                 const Query_options& query = {}) const {
-    return compute_by_index(m_indexed.index_of(source), patch, query);
-  }
-
-  /// As `compute()`, with the source given by its index in `vertices(tm)`.
-  /// \throws Invalid_input as `compute()`, and if the index is out of range.
+  /// Polar coordinates around the vertex of index `source` in
+  /// `vertices(tm)` for the vertices of `patch`; `compute()` takes a vertex
+  /// descriptor, `compute_many()` and `compute_many_by_index()` many sources.
+  /// \throws Invalid_input if the index is out of range, the source is
+  ///         isolated, the reference direction is parallel to its normal,
+  ///         or the patch names vertices out of range or outside the
+  ///         source's component.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
-
-  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -144,7 +126,7 @@ class Exact_exponential_map {
   double ball_radius(int s, const Patch& patch, std::size_t target, const std::vector<int>& wanted,
                      Workspace& ws) const;
 
-  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
+  using Front::m_indexed;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -211,28 +193,22 @@ template <class TM, class VPM>
 typename Exact_exponential_map<TM, VPM>::Result
 Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                   const Query_options& query) const {
-  const int s = internal::checked_source(m_indexed.arrays, source_index);
-  std::optional<internal::Vector3> reference;
-  if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
-  const Patch::Kind kind = patch.kind();
-  const bool by_count = kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction;
-  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
-  std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
+  const internal::Checked_query q =
+      internal::checked_query(m_indexed.arrays, source_index, patch, query);
+  const int s = q.source;
 
   auto ws = m_workspaces.acquire([this] {
-    return std::make_unique<Workspace>(number_of_vertices(), m_indexed.arrays.face.size());
+    return std::make_unique<Workspace>(this->number_of_vertices(), m_indexed.arrays.face.size());
   });
   ws->entries.clear();
   ws->wanted.next_query();
-  for (int v : wanted) ws->wanted.mark(v, 0);
-  if ((by_count && target <= 1) || (kind == Patch::Kind::vertex_set && wanted.empty()))
-    return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
+  for (int v : q.wanted) ws->wanted.mark(v, 0);
+  if ((q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
+    return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
 
   // A hair more than the radius, so that rounding cannot drop a face that
   // a geodesic of length exactly R touches.
-  const double radius = ball_radius(s, patch, target, wanted, *ws) * (1 + 1e-9);
+  const double radius = ball_radius(s, patch, q.target, q.wanted, *ws) * (1 + 1e-9);
   internal::Ball_submesh& ball = ws->ball;
   internal::extract_ball_submesh(m_indexed.arrays, s, radius, ws->face_marks, ws->vertex_marks,
                                  ws->face_queue, ball);
@@ -256,22 +232,22 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
   const std::size_t n_local = ball.mesh_vertex.size();
   for (std::size_t i = 0; i < n_local; ++i) {
     const int v = ball.mesh_vertex[i];
-    if (v == s || (kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v))) continue;
+    if (v == s || (q.kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v))) continue;
     const double r = CGAL::to_double(
         shortest_paths
             .shortest_distance_to_source_points(Submesh::Vertex_index(static_cast<Submesh::size_type>(i)))
             .first);
     if (r < 0) continue;  // not reached (cannot happen for the vertices a patch needs)
-    if (kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
+    if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({static_cast<int>(i), r, 0.0});  // local index for now
   }
   auto nearer = [](const internal::Polar_entry& a, const internal::Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
-  if (by_count && ws->entries.size() + 1 > target) {
-    std::nth_element(ws->entries.begin(), ws->entries.begin() + (target - 1), ws->entries.end(),
+  if (q.by_count && ws->entries.size() + 1 > q.target) {
+    std::nth_element(ws->entries.begin(), ws->entries.begin() + (q.target - 1), ws->entries.end(),
                      nearer);
-    ws->entries.resize(target - 1);
+    ws->entries.resize(q.target - 1);
   }
 
   const internal::Vector3& ps = m_indexed.arrays.point[s];
@@ -280,10 +256,10 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
     shortest_paths.shortest_path_points_to_source_points(
         Submesh::Vertex_index(static_cast<Submesh::size_type>(e.vertex)),
         std::back_inserter(ws->path));
-    e.angle = frame.angle_of(first_direction(ws->path, ps, e.distance));
+    e.angle = q.frame.angle_of(first_direction(ws->path, ps, e.distance));
     e.vertex = ball.mesh_vertex[e.vertex];
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
 }
 
 }  // namespace expmap

@@ -8,11 +8,10 @@
 /// a baseline of the package.
 
 #include <expmap/Errors.h>
-#include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Fibonacci_vertex_queue.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -22,10 +21,6 @@
 #include <expmap/internal/Workspace_pool.h>
 
 #include <CGAL/Default.h>
-#include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/boost/graph/properties.h>
-
-#include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -80,44 +75,31 @@ namespace expmap {
 /// \endcode
 /// \sa `Heat_exponential_map`, `Discrete_exponential_map`, `Exact_exponential_map`
 template <class TriangleMesh, class VertexPointMap = CGAL::Default>
-class Geodesic_polar_coordinates {
+class Geodesic_polar_coordinates
+    : public internal::Method_front<Geodesic_polar_coordinates<TriangleMesh, VertexPointMap>,
+                                    TriangleMesh, VertexPointMap> {
+  using Front = internal::Method_front<Geodesic_polar_coordinates, TriangleMesh, VertexPointMap>;
+
  public:
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map =
-      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
-  using Result = Local_map<vertex_descriptor>;
+  using typename Front::Result;
 
   /// A vertex takes a new distance only if it is smaller by this relative
   /// amount (the authors' epsilon): it stops endless requeueing on rounding.
   static constexpr double relative_improvement = 1e-12;
 
-  /// Copies the mesh.
-  /// \throws Invalid_input for meshes that cannot be used (empty, not
-  ///         triangulated, degenerate faces, non-finite coordinates).
-  explicit Geodesic_polar_coordinates(const TriangleMesh& tm)
-      : Geodesic_polar_coordinates(tm, get(CGAL::vertex_point, tm)) {}
+  /// Built from a mesh `tm` and optionally its vertex point map `vpm`:
+  /// `(tm)` or `(tm, vpm)`; see `internal::Method_front`.
+  using Front::Front;
 
-  /// As above, with an explicit vertex point map.
-  Geodesic_polar_coordinates(const TriangleMesh& tm, Vertex_point_map vpm)
-      : m_indexed(tm, vpm) {
-  }
-
-  /// Polar coordinates around `source` for the vertices of `patch`.
-  /// \pre `source` is a vertex of the mesh given to the constructor.
-  /// \throws Invalid_input if the source is isolated, the reference
-  ///         direction is parallel to its normal, or the patch names
-  ///         vertices out of range or outside the source's component.
-  Result compute(vertex_descriptor source, const Patch& patch,
-                 const Query_options& query = {}) const {
-    return compute_by_index(m_indexed.index_of(source), patch, query);
-  }
-
-  /// As `compute()`, with the source given by its index in `vertices(tm)`.
-  /// \throws Invalid_input as `compute()`, and if the index is out of range.
+  /// Polar coordinates around the vertex of index `source` in
+  /// `vertices(tm)` for the vertices of `patch`; `compute()` takes a vertex
+  /// descriptor, `compute_many()` and `compute_many_by_index()` many sources.
+  /// \throws Invalid_input if the index is out of range, the source is
+  ///         isolated, the reference direction is parallel to its normal,
+  ///         or the patch names vertices out of range or outside the
+  ///         source's component.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
-
-  std::size_t number_of_vertices() const { return m_indexed.descriptors.size(); }
 
  private:
   struct Workspace {
@@ -149,7 +131,7 @@ class Geodesic_polar_coordinates {
   // Offers vertex j a distance through the edge (i, k) of one of its faces.
   void update(int j, int i, int k, const Propagation& run, Workspace& ws) const;
 
-  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
+  using Front::m_indexed;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -189,30 +171,25 @@ typename Geodesic_polar_coordinates<TM, VPM>::Result
 Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                        const Query_options& query) const {
   using internal::operator-;
-  const int s = internal::checked_source(m_indexed.arrays, source_index);
-  std::optional<internal::Vector3> reference;
-  if (query.reference_direction) reference = *query.reference_direction;
-  const internal::Tangent_frame frame = internal::tangent_frame(m_indexed.arrays, s, reference);
-  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, frame);
-  const Patch::Kind kind = patch.kind();
-  const bool by_count = kind == Patch::Kind::vertex_count || kind == Patch::Kind::fraction;
-  const std::size_t target = internal::patch_target_count(m_indexed.arrays, patch, s);
-  std::vector<int> wanted;
-  if (kind == Patch::Kind::vertex_set) wanted = internal::checked_vertex_set(m_indexed.arrays, patch, s);
+  const internal::Checked_query q =
+      internal::checked_query(m_indexed.arrays, source_index, patch, query);
+  const int s = q.source;
+  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, q.frame);
 
-  auto ws = m_workspaces.acquire([this] { return std::make_unique<Workspace>(number_of_vertices()); });
+  auto ws = m_workspaces.acquire(
+      [this] { return std::make_unique<Workspace>(this->number_of_vertices()); });
   ws->queue.clear();
   ws->known.next_query();
   ws->popped.next_query();
   ws->popped_order.clear();
   ws->wanted.next_query();
-  for (int v : wanted) ws->wanted.mark(v, 0);
-  std::size_t missing = wanted.size();
+  for (int v : q.wanted) ws->wanted.mark(v, 0);
+  std::size_t missing = q.wanted.size();
 
   Propagation run{s, ring.closed, std::numeric_limits<double>::infinity()};
-  if (kind == Patch::Kind::geodesic_radius) run.limit = patch.radius();
+  if (q.kind == Patch::Kind::geodesic_radius) run.limit = patch.radius();
   // Patches that the source alone fills need no propagation.
-  bool done = (by_count && target <= 1) || (kind == Patch::Kind::vertex_set && missing == 0);
+  bool done = (q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && missing == 0);
 
   ws->known.mark(s, 0);
   ws->distance[s] = 0;
@@ -234,8 +211,8 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
       ws->popped_order.push_back(v);
       farthest_popped = std::max(farthest_popped, d);
       const bool complete =
-          (by_count && ws->popped_order.size() + 1 >= target) ||
-          (kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v) && --missing == 0);
+          (q.by_count && ws->popped_order.size() + 1 >= q.target) ||
+          (q.kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v) && --missing == 0);
       if (complete) run.limit = farthest_popped;
     }
     for (int p = m_indexed.arrays.vertex_face_start[v]; p < m_indexed.arrays.vertex_face_start[v + 1]; ++p) {
@@ -249,11 +226,11 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
 
   ws->entries.clear();
   for (int v : ws->popped_order) {
-    if (kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
+    if (q.kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
     ws->entries.push_back({v, ws->distance[v], ws->angle[v] - ring.reference_angle});
   }
-  if (by_count && ws->entries.size() + 1 > target) {
-    const std::size_t keep = target - 1;
+  if (q.by_count && ws->entries.size() + 1 > q.target) {
+    const std::size_t keep = q.target - 1;
     std::nth_element(ws->entries.begin(), ws->entries.begin() + keep, ws->entries.end(),
                      [](const internal::Polar_entry& a, const internal::Polar_entry& b) {
                        return a.distance < b.distance ||
@@ -261,7 +238,7 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
                      });
     ws->entries.resize(keep);
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, frame);
+  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
 }
 
 }  // namespace expmap

@@ -19,7 +19,7 @@
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Locality_order.h>
-#include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/Query_validation.h>
@@ -134,12 +134,15 @@ struct Heat_options {
 /// \endcode
 template <class TriangleMesh, class VertexPointMap = CGAL::Default,
           class Solver = Cholmod_solver>
-class Heat_exponential_map {
+class Heat_exponential_map
+    : public internal::Method_front<Heat_exponential_map<TriangleMesh, VertexPointMap, Solver>,
+                                    TriangleMesh, VertexPointMap> {
+  using Front = internal::Method_front<Heat_exponential_map, TriangleMesh, VertexPointMap>;
+
  public:
-  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using Vertex_point_map =
-      typename internal::Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
-  using Result = Local_map<vertex_descriptor>;
+  using typename Front::Result;
+  using typename Front::vertex_descriptor;
+  using typename Front::Vertex_point_map;
 
   /// Precomputes operators and both factorizations.
   /// \throws Invalid_input for meshes that cannot be used (empty, not
@@ -150,7 +153,7 @@ class Heat_exponential_map {
 
   /// As above, with an explicit vertex point map.
   Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options, Vertex_point_map vpm)
-      : m_options(checked(options)), m_indexed(tm, vpm) {
+      : Front(tm, vpm), m_options(checked(options)) {
     // Queries work on vertices renumbered along a space-filling curve (see
     // internal::locality_order); sources, patches and results use the
     // user's indices.
@@ -162,17 +165,14 @@ class Heat_exponential_map {
     m_workspaces.acquire([this] { return std::make_unique<Workspace>(*this); });
   }
 
-  /// Geodesic polar coordinates around `source` for the vertices of `patch`.
-  /// \throws Invalid_input if the source is isolated or the patch names
-  ///         vertices out of range or outside the source's component.
+  /// Geodesic polar coordinates around the vertex of index `source` in
+  /// `vertices(tm)` for the vertices of `patch`; `compute()` takes a vertex
+  /// descriptor, `compute_many()` and `compute_many_by_index()` many sources.
+  /// \throws Invalid_input if the index is out of range, the source is
+  ///         isolated or the patch names vertices out of range or outside
+  ///         the source's component.
   /// \throws Computation_error if heat underflows inside the patch (choose a
   ///         larger time factor or a smaller patch).
-  Result compute(vertex_descriptor source, const Patch& patch,
-                 const Query_options& query = {}) const {
-    return compute_by_index(m_indexed.index_of(source), patch, query);
-  }
-
-  /// As `compute()`, with the source given by its index in `vertices(tm)`.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
@@ -191,7 +191,7 @@ class Heat_exponential_map {
     return m_heat_local.number_of_entries() + m_poisson_local.number_of_entries() +
            (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
-  std::size_t number_of_vertices() const { return m_indexed.number_of_vertices(); }
+  using Front::number_of_vertices;
   const Heat_options& options() const { return m_options; }
 
  private:
@@ -221,7 +221,7 @@ class Heat_exponential_map {
     std::vector<double> divergence, potential;
   };
 
-  // The options, validated before anything is copied or factored.
+  // The options, validated before anything is factored.
   static const Heat_options& checked(const Heat_options& options) {
     auto check_time = [](double m, const char* name) {
       if (!(m > 0) || !std::isfinite(m))
@@ -331,8 +331,8 @@ class Heat_exponential_map {
                     const internal::Star_gradient& star, const std::vector<std::size_t>& order,
                     const Workspace& ws, Result& result) const;
 
+  using Front::m_indexed;
   Heat_options m_options;
-  internal::Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
   internal::Faces_by_smallest_corner m_faces;  // of the triangulation the operators are built on
   std::vector<char> m_is_pinned;  // one vertex per component in the Poisson system
   double m_time_step = 0, m_distance_time_step = 0;

@@ -6,8 +6,11 @@
 #include <expmap/Errors.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/Vector3.h>
 
 #include <algorithm>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -58,6 +61,31 @@ inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& pa
 inline std::size_t patch_target_count(const Mesh_arrays& m, const Patch& patch, int s) {
   const std::size_t component = static_cast<std::size_t>(m.component_size[m.component[s]]);
   return std::min(component, patch.target_count(m.number_of_vertices()));
+}
+
+/// A query's source, frame and patch after the checks above, in the order
+/// every method makes them (so the first error is the same for all).
+struct Checked_query {
+  int source;                // as stored in the mesh arrays
+  Tangent_frame frame;       // the frame all methods measure angles in
+  Patch::Kind kind;
+  bool by_count;             // a count or fraction patch
+  std::size_t target;        // its vertex count, as `patch_target_count()`
+  std::vector<int> wanted;   // a vertex-set patch's vertices, as `checked_vertex_set()`
+};
+
+/// \throws Invalid_input as the checks above, and if the reference
+///         direction is parallel to the source's normal.
+inline Checked_query checked_query(const Mesh_arrays& m, std::size_t source, const Patch& patch,
+                                   const Query_options& query) {
+  const int s = checked_source(m, source);
+  std::optional<Vector3> reference;
+  if (query.reference_direction) reference = *query.reference_direction;
+  Checked_query q{s, tangent_frame(m, s, reference), patch.kind(), false, 0, {}};
+  q.by_count = q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction;
+  q.target = patch_target_count(m, patch, s);
+  if (q.kind == Patch::Kind::vertex_set) q.wanted = checked_vertex_set(m, patch, s);
+  return q;
 }
 
 }  // namespace internal

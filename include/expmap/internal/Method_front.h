@@ -1,0 +1,97 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_METHOD_FRONT_H
+#define EXPMAP_INTERNAL_METHOD_FRONT_H
+
+#include <expmap/Batch.h>
+#include <expmap/Local_map.h>
+#include <expmap/Patch.h>
+#include <expmap/internal/Indexed_mesh.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// What the four method classes share in front of their algorithms:
+/// construction (the copy of the user's mesh with its vertex index map),
+/// queries by vertex descriptor, and batches. `Derived` (the method class, which derives from
+/// this one) provides
+///
+///     Result compute_by_index(std::size_t source, const Patch&, const Query_options&) const;
+///
+/// which must be thread safe; everything here is written in terms of it.
+template <class Derived, class TriangleMesh, class VertexPointMap>
+class Method_front {
+ public:
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using Vertex_point_map = typename Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
+  using Result = Local_map<vertex_descriptor>;
+
+  /// Copies the mesh, with its `vertex_point` map.
+  /// \throws Invalid_input for meshes that cannot be used (empty, not
+  ///         triangulated, degenerate faces, non-finite coordinates).
+  explicit Method_front(const TriangleMesh& tm) : Method_front(tm, get(CGAL::vertex_point, tm)) {}
+
+  /// Copies the mesh, with the points of `vpm`.
+  /// \throws Invalid_input as above.
+  Method_front(const TriangleMesh& tm, Vertex_point_map vpm) : m_indexed(tm, vpm) {}
+
+  /// Polar coordinates around `source` for the vertices of `patch`: the
+  /// method's `compute_by_index()` for the index of `source`.
+  /// \pre `source` is a vertex of the mesh given to the constructor.
+  /// \throws Invalid_input, Computation_error as `compute_by_index()`.
+  Result compute(vertex_descriptor source, const Patch& patch,
+                 const Query_options& query = {}) const {
+    return derived().compute_by_index(m_indexed.index_of(source), patch, query);
+  }
+
+  /// One map per source, computed on `batch.threads` threads (each query as
+  /// `compute()`); see `Batch_result` for the order and the failures.
+  /// \pre every source is a vertex of the mesh given to the constructor.
+  /// \throws only what `batch.progress` throws: a failed query is reported
+  ///         in the result, at its source's position.
+  ///
+  /// \code
+  /// auto batch = method.compute_many(sources, expmap::Patch::fraction(0.01), {/*threads*/ 2});
+  /// \endcode
+  Batch_result<vertex_descriptor> compute_many(const std::vector<vertex_descriptor>& sources,
+                                               const Patch& patch, const Batch_options& batch = {},
+                                               const Query_options& query = {}) const {
+    std::vector<std::size_t> indices;
+    indices.reserve(sources.size());
+    for (vertex_descriptor v : sources) indices.push_back(m_indexed.index_of(v));
+    return compute_many_by_index(indices, patch, batch, query);
+  }
+
+  /// As `compute_many()`, with the sources given by their indices in
+  /// `vertices(tm)`; an index out of range is that source's error.
+  Batch_result<vertex_descriptor> compute_many_by_index(const std::vector<std::size_t>& sources,
+                                                        const Patch& patch,
+                                                        const Batch_options& batch = {},
+                                                        const Query_options& query = {}) const {
+    return run_batch<vertex_descriptor>(sources, batch, [&](std::size_t source) {
+      return derived().compute_by_index(source, patch, query);
+    });
+  }
+
+  /// The number of vertices of the mesh given to the constructor.
+  std::size_t number_of_vertices() const { return m_indexed.number_of_vertices(); }
+
+ protected:
+  Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
+
+ private:
+  const Derived& derived() const { return static_cast<const Derived&>(*this); }
+};
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_METHOD_FRONT_H

@@ -1,0 +1,68 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_PARALLEL_LOOP_H
+#define EXPMAP_INTERNAL_PARALLEL_LOOP_H
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// The number of threads a batch runs on: `requested`, or the hardware's
+/// count for 0, never more than there is work for, and at least 1.
+inline unsigned batch_thread_count(unsigned requested, std::size_t work) {
+  unsigned threads = requested != 0 ? requested : std::thread::hardware_concurrency();
+  if (threads == 0) threads = 1;  // hardware_concurrency() may not know
+  return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, work)));
+}
+
+/// Calls `body(i)` once for every i in [0, count) on `threads` threads, the
+/// calling one included. Each thread takes the next index from a shared
+/// counter when it is done with the last, so uneven work (patches near a
+/// boundary, failed queries) never leaves a thread idle while others still
+/// have a queue of their own.
+///
+/// If `body` throws, no further index is started; the running calls finish
+/// and the first exception is rethrown here. If the system refuses to start
+/// a thread, the loop runs on the threads it has (at worst the caller's).
+template <class Body>
+void parallel_loop(std::size_t count, unsigned threads, Body body) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> stop{false};
+  std::mutex failure_mutex;
+  std::exception_ptr failure;
+  auto work = [&]() {
+    while (!stop.load(std::memory_order_relaxed)) {
+      const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
+      if (i >= count) return;
+      try {
+        body(i);
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        stop = true;
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  try {
+    helpers.reserve(threads);
+    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+  } catch (const std::exception&) {  // std::system_error, std::bad_alloc
+    // Fewer threads than asked: slower, but every index is still done.
+  }
+  work();
+  for (std::thread& helper : helpers) helper.join();
+  if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_PARALLEL_LOOP_H
