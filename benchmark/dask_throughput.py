@@ -11,7 +11,8 @@ timed from the mesh files to all arrays in memory (reading and
 precomputation included; the cluster's start-up excluded):
   one process, one thread:  compute_many(threads=1), mesh after mesh
   one process, all threads: compute_many(threads=0)
-  LocalCluster:             map_meshes() on --workers processes of 1 thread
+  LocalCluster:             map_meshes() on --workers processes of 1 thread,
+                            and on 1 process of --workers threads
 """
 
 import argparse
@@ -32,10 +33,10 @@ def one_process(meshes, patch, threads):
     return maps, time.perf_counter() - start
 
 
-def through_cluster(meshes, patch, workers, chunk_size):
+def through_cluster(meshes, patch, workers, threads, chunk_size):
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+    with LocalCluster(n_workers=workers, threads_per_worker=threads, processes=True, host="127.0.0.1",
                       dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
             Client(cluster) as client:
         client.wait_for_workers(workers)
@@ -55,8 +56,10 @@ def main():
     patch = {"fraction": args.fraction}
     for name, run in (("one process, 1 thread", lambda: one_process(args.meshes, patch, 1)),
                       ("one process, all threads", lambda: one_process(args.meshes, patch, 0)),
-                      ("LocalCluster, %d workers" % args.workers,
-                       lambda: through_cluster(args.meshes, patch, args.workers, args.chunk_size))):
+                      ("LocalCluster, %d x 1 thread" % args.workers,
+                       lambda: through_cluster(args.meshes, patch, args.workers, 1, args.chunk_size)),
+                      ("LocalCluster, 1 x %d threads" % args.workers,
+                       lambda: through_cluster(args.meshes, patch, 1, args.workers, args.chunk_size))):
         maps, seconds = run()
         print("%-28s %8d maps %8.2f s %10.0f maps/s" % (name, maps, seconds, maps / seconds), flush=True)
 

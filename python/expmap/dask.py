@@ -176,11 +176,12 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
             raise ValueError("out_dir %r is not a folder" % (out_dir,))
         npz_paths = _npz_paths(meshes, out_dir)
 
-    # Meshes are precomputed a few at a time (one per worker), the next when
-    # one is done: all at once, a worker would precompute more meshes than
-    # its cache holds before mapping any, and then precompute them again.
+    # Meshes are precomputed a few at a time (one per worker, plus one so a
+    # worker can start the next while its threads still map the last), the
+    # next when one is done: all at once, a worker would precompute more
+    # meshes than its cache holds before mapping any, then redo them.
     waiting = list(reversed(meshes))
-    in_flight = max(1, len(client.scheduler_info().get("workers", {})))
+    in_flight = len(client.scheduler_info().get("workers", {})) + 1
     prepared_mesh = {}  # future key -> mesh
     chunk_futures = {}  # future key -> (mesh, chunk number)
     chunks_of = {}

@@ -5,11 +5,11 @@
 // `CGAL::Surface_mesh` built from NumPy arrays. Queries run without the GIL,
 // so Python threads (and Dask workers) can query one object at once.
 
-#include "Batch_queries.h"
 #include "Map_arrays.h"
 #include "Mesh_file.h"
 #include "Mesh_from_arrays.h"
 
+#include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Errors.h>
 #include <expmap/Exact_exponential_map.h>
@@ -175,10 +175,12 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
         if (threads > 4096)
           throw expmap::Invalid_input("threads must be at most 4096 (got " +
                                       std::to_string(threads) + ")");
-        Batch_maps<Mesh::Vertex_index> batch;
+        expmap::Batch_options options;
+        options.threads = static_cast<unsigned>(threads);
+        expmap::Batch_result<Mesh::Vertex_index> batch;
         {
           py::gil_scoped_release release;
-          batch = compute_batch(*b.method, sources, patch, query, static_cast<unsigned>(threads));
+          batch = b.method->compute_many_by_index(sources, patch, options, query);
         }
         return Batch_arrays(sources, batch.maps, std::move(batch.errors));
       },
