@@ -199,3 +199,39 @@ def test_everything_is_documented():
                 expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap):
         for member in ("__init__", "compute", "compute_many"):
             assert getattr(cls, member).__doc__, (cls, member)
+
+
+def test_damaged_real_meshes_raise_or_give_finite_maps():
+    """Real meshes with faces removed, points merged, flattened or scaled to
+    extremes: every method either raises ValueError / RuntimeError or
+    returns finite maps (a crash would end the test run)."""
+    from conftest import mesh_path
+
+    rng = np.random.default_rng(12)
+    bases = [expmap.read_mesh(mesh_path(name), triangulate=True)
+             for name in ("icosahedron.off", "octahedron.off", "fold.off", "star.off", "hole.off")]
+    classes = (expmap.HeatExponentialMap, expmap.DiscreteExponentialMap,
+               expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap)
+    for trial in range(40):
+        V, F = (a.copy() for a in bases[trial % len(bases)])
+        F = F[rng.random(len(F)) < 0.8] if trial % 3 == 0 else F
+        if len(F) == 0:
+            continue
+        if trial % 4 == 1:
+            V[rng.integers(len(V))] = V[rng.integers(len(V))]
+        if trial % 5 == 2:
+            V[:, 2] = 0
+        if trial % 7 == 3:
+            V *= 1e-200
+        for cls in classes:
+            try:
+                mapper = cls(V, F)
+            except (ValueError, RuntimeError):
+                continue
+            for source in range(len(V)):
+                for patch in ({"fraction": 1.0}, {"vertices": 3}, {"radius": 0.5}):
+                    try:
+                        local = mapper.compute(source, **patch)
+                    except (ValueError, RuntimeError):
+                        continue
+                    assert np.all(np.isfinite(local.r)) and np.all(np.isfinite(local.uv))
