@@ -6,9 +6,7 @@
 /// \file Mesh_loading.h
 /// Reading a triangle mesh for the benchmark, and its name in the tables.
 
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/boost/graph/helpers.h>
+#include <expmap/IO/read_triangle_mesh.h>
 
 #include <filesystem>
 #include <stdexcept>
@@ -16,16 +14,20 @@
 
 namespace expmap_bench {
 
-/// Reads any format CGAL reads (OFF, OBJ, PLY, STL) and triangulates
-/// non-triangle faces. \throws std::runtime_error if the file cannot be read.
+/// Reads any format CGAL reads (OFF, OBJ, PLY, STL) as the `expmap` program
+/// does (`expmap::IO::read_triangle_mesh`: sizes checked, soups oriented,
+/// polygons triangulated). \throws std::runtime_error if the file cannot be
+/// read.
 template <class Mesh>
 Mesh read_triangle_mesh(const std::string& path) {
   if (!std::filesystem::is_regular_file(path))
     throw std::runtime_error("cannot open mesh file '" + path + "'");
   Mesh mesh;
-  if (!CGAL::IO::read_polygon_mesh(path, mesh) || is_empty(mesh))
-    throw std::runtime_error("cannot read a polygon mesh from '" + path + "'");
-  if (!CGAL::is_triangle_mesh(mesh)) CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  try {
+    expmap::IO::read_triangle_mesh(path, mesh);
+  } catch (const expmap::Invalid_input& e) {
+    throw std::runtime_error(e.what());
+  }
   return mesh;
 }
 

@@ -48,7 +48,8 @@ struct Compute_arguments {
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<std::string> angles;     // "area-weighted" or "quadratic-fit"
   std::optional<std::array<double, 3>> reference;
-  bool triangulate = false;
+  bool triangulate = true;  // --no-triangulate refuses polygonal faces instead
+  bool repair = false;
   std::vector<Output> outputs;
   bool help = false;
 };
@@ -193,9 +194,14 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
       a.reference = parse_vector(name, take_value());
       const auto& r = *a.reference;
       if (r[0] == 0 && r[1] == 0 && r[2] == 0) throw Usage_error("--reference must not be zero");
-    } else if (name == "--triangulate") {
-      if (inline_value) throw Usage_error("--triangulate takes no value");
-      a.triangulate = true;
+    } else if (name == "--triangulate" || name == "--no-triangulate" || name == "--repair") {
+      // --triangulate is the default; it is still accepted so that older
+      // command lines keep working.
+      if (inline_value) throw Usage_error(name + " takes no value");
+      if (name == "--repair")
+        a.repair = true;
+      else
+        a.triangulate = name == "--triangulate";
     } else if (name == "-o" || name == "--output") {
       const std::string path = take_value();
       a.outputs.push_back({path, output_format(path)});

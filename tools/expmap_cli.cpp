@@ -7,7 +7,6 @@
 // stderr starting with "expmap: error: ".
 
 #include "Command_line.h"
-#include "Mesh_file.h"
 
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Errors.h>
@@ -15,12 +14,15 @@
 #include <expmap/Fold_overs.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
+#include <expmap/IO/read_triangle_mesh.h>
 #include <expmap/IO/write_csv.h>
 #include <expmap/IO/write_svg.h>
 #include <expmap/IO/write_textured_obj.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
@@ -37,7 +39,7 @@
 
 namespace {
 
-using expmap_cli::Mesh;
+using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
 using expmap_cli::Compute_arguments;
 using expmap_cli::Usage_error;
@@ -156,7 +158,8 @@ std::string compute_help() {
   const expmap::Heat_options defaults;
   h << "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
        "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
-       "                      [--reference X,Y,Z] [--triangulate] -o OUT [-o OUT ...]\n"
+       "                      [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+       "                      -o OUT [-o OUT ...]\n"
        "\n"
        "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
        "  --source V           source vertex, 0-based index in file order (required;\n"
@@ -188,10 +191,17 @@ std::string compute_help() {
        "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"
-       "input:\n"
-       "  --triangulate        split polygonal faces into triangles first (no vertex\n"
-       "                       is added, so indices keep file order); without it a\n"
-       "                       mesh with polygons is an error (default: off)\n"
+       "input (what is repaired is said on stderr as 'expmap: note: ...'):\n"
+       "  --no-triangulate     refuse faces with more than three vertices instead of\n"
+       "                       splitting them into triangles (the default, which adds\n"
+       "                       no vertex, so indices keep file order; --triangulate\n"
+       "                       asks for the default explicitly)\n"
+       "  --repair             remove degenerate faces (zero area), needles and caps\n"
+       "                       by collapsing and flipping edges; vertex indices in the\n"
+       "                       CSV stay those of the file\n"
+       "                       Files whose faces are not an oriented 2-manifold (faces\n"
+       "                       in random orientation, duplicates, non-manifold\n"
+       "                       vertices) are read as a polygon soup and oriented.\n"
        "output (at least one, format by extension; may repeat):\n"
        "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"
        "                             vertex, nearest first; theta in (-pi, pi]\n"
@@ -207,8 +217,48 @@ std::string compute_help() {
   return h.str();
 }
 
-Mesh read_mesh(const Compute_arguments& a) {
-  return expmap_cli::read_mesh_file(a.mesh, a.triangulate);
+// The mesh as the methods need it, and where its vertices are in the file.
+struct Input {
+  Mesh mesh;
+  expmap::IO::Mesh_reading_report report;
+};
+
+Input read_mesh(const Compute_arguments& a) {
+  if (!std::ifstream(a.mesh))
+    throw Runtime_error("cannot open mesh file '" + a.mesh + "' (missing or not readable)");
+  Input input;
+  expmap::IO::Mesh_reading_options options;
+  options.triangulate = a.triangulate;
+  options.repair = a.repair;
+  input.report = expmap::IO::read_triangle_mesh(a.mesh, input.mesh, options);
+  if (!input.report.notes.empty()) {
+    std::string note;
+    for (const std::string& n : input.report.notes) note += (note.empty() ? "" : "; ") + n;
+    std::fflush(stdout);
+    std::cerr << "expmap: note: '" << a.mesh << "': " << note << "\n";
+  }
+  if (!CGAL::is_triangle_mesh(input.mesh)) {
+    std::size_t polygons = 0;
+    for (auto f : input.mesh.faces()) polygons += input.mesh.degree(f) > 3;
+    throw Runtime_error("'" + a.mesh + "' has " + std::to_string(polygons) +
+                        " faces with more than three vertices and --no-triangulate was given");
+  }
+  return input;
+}
+
+// The mesh vertex at position `source` of the file.
+Mesh::Vertex_index find_source(const Compute_arguments& a, const Input& input) {
+  const auto& file_index = input.report.file_index;
+  const auto found = std::find(file_index.begin(), file_index.end(), a.source);
+  if (found != file_index.end())
+    return Mesh::Vertex_index(static_cast<Mesh::size_type>(found - file_index.begin()));
+  const std::size_t n = input.report.file_vertices;
+  if (a.source < n)
+    throw Runtime_error("--source " + std::to_string(a.source) +
+                        " was removed by --repair (it lay on a degenerate face); choose another");
+  throw Usage_error("--source " + std::to_string(a.source) + " is out of range: '" + a.mesh +
+                    "' has " + std::to_string(n) + " vertices" +
+                    (n ? " (0 to " + std::to_string(n - 1) + ")" : ""));
 }
 
 expmap::Patch make_patch(const Compute_arguments& a) {
@@ -217,13 +267,17 @@ expmap::Patch make_patch(const Compute_arguments& a) {
   return expmap::Patch::vertex_count(*a.vertex_count);
 }
 
-void write_output(const expmap_cli::Output& output, const Mesh& mesh, const Run& run) {
+void write_output(const expmap_cli::Output& output, const Input& input, const Run& run) {
+  const Mesh& mesh = input.mesh;
   std::ofstream out(output.path);
   if (!out) throw Runtime_error("cannot create output file '" + output.path + "'");
   switch (output.format) {
-    case expmap_cli::Output_format::csv:
-      expmap::IO::write_local_map_csv(out, run.map);
+    case expmap_cli::Output_format::csv: {
+      Map in_file_order = run.map;  // --repair renumbers the mesh; the CSV speaks of the file
+      for (std::size_t& i : in_file_order.indices) i = input.report.file_index[i];
+      expmap::IO::write_local_map_csv(out, in_file_order);
       break;
+    }
     case expmap_cli::Output_format::obj:
       expmap::IO::write_textured_obj(out, mesh, run.map);
       break;
@@ -256,22 +310,20 @@ int compute(const std::vector<std::string>& args) {
                           "' does not exist");
   }
 
-  Mesh mesh = read_mesh(a);
-  if (a.source >= num_vertices(mesh))
-    throw Usage_error("--source " + std::to_string(a.source) + " is out of range: '" + a.mesh +
-                      "' has " + std::to_string(num_vertices(mesh)) + " vertices (0 to " +
-                      std::to_string(num_vertices(mesh) - 1) + ")");
+  const Input input = read_mesh(a);
+  const Mesh& mesh = input.mesh;
+  const Mesh::Vertex_index source = find_source(a, input);
   expmap::Query_options query;
   query.reference_direction = a.reference;
 
   Run run;
   try {
-    run = method.run(mesh, a, Mesh::Vertex_index(static_cast<Mesh::size_type>(a.source)),
-                     make_patch(a), query);
+    run = method.run(mesh, a, source, make_patch(a), query);
   } catch (const expmap::Invalid_input& e) {
-    if (!CGAL::is_triangle_mesh(mesh))
+    // The library names the face; the program knows the option that helps.
+    if (!a.repair && std::string(e.what()).find("degenerate") != std::string::npos)
       throw Runtime_error(std::string(e.what()) +
-                          " (or run expmap with --triangulate to split polygonal faces)");
+                          " (or run expmap with --repair to remove degenerate faces and needles)");
     throw;
   }
   if (run.description.empty()) run.description = method.description;
@@ -290,7 +342,7 @@ int compute(const std::vector<std::string>& args) {
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
   for (const auto& output : a.outputs) {
-    write_output(output, mesh, run);
+    write_output(output, input, run);
     std::printf("wrote:       %s\n", output.path.c_str());
   }
   return 0;

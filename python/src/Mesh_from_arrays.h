@@ -8,9 +8,10 @@
 // here, before CGAL sees it: in a Release build CGAL's own assertions are
 // off, so a bad index would be a crash, not an exception.
 
-#include "Mesh_file.h"
-
 #include <expmap/Errors.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -22,7 +23,8 @@
 namespace expmap_python {
 
 namespace py = pybind11;
-using expmap_cli::Mesh;
+/// The mesh type of the command-line program, for the same results.
+using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 
 using Index_array = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
 using Real_array = py::array_t<double, py::array::c_style | py::array::forcecast>;
@@ -135,8 +137,8 @@ inline py::tuple arrays_from_mesh(const Mesh& mesh) {
     }
     if (k != 3 || CGAL::halfedges_around_face(mesh.halfedge(face), mesh).size() != 3)
       throw expmap::Invalid_input("face " + std::to_string(j) +
-                                  " is not a triangle (read_mesh(path, triangulate=True) "
-                                  "splits polygons)");
+                                  " is not a triangle (read_mesh(path) splits polygons unless "
+                                  "triangulate=False)");
     ++j;
   }
   return py::make_tuple(vertices, faces);

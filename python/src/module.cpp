@@ -6,7 +6,6 @@
 // so Python threads (and Dask workers) can query one object at once.
 
 #include "Map_arrays.h"
-#include "Mesh_file.h"
 #include "Mesh_from_arrays.h"
 
 #include <expmap/Batch.h>
@@ -15,6 +14,7 @@
 #include <expmap/Exact_exponential_map.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
+#include <expmap/IO/read_triangle_mesh.h>
 #include <expmap/Patch.h>
 
 #include <pybind11/numpy.h>
@@ -22,6 +22,7 @@
 #include <pybind11/stl.h>
 
 #include <climits>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,12 @@ namespace py = pybind11;
 using namespace expmap_python;
 
 namespace {
+
+/// A mesh file that cannot be opened: Python's OSError, as for open().
+class Mesh_file_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// A method object and the mesh it was built on (kept alive with it).
 template <class Method>
@@ -294,8 +301,8 @@ PYBIND11_MODULE(_expmap, m) {
       .attr("__doc__") =
       "A computation that failed on valid input (expmap::Computation_error), e.g. heat\n"
       "underflow; a RuntimeError.";
-  py::register_exception<expmap_cli::Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
-      .attr("__doc__") = "A mesh file that is missing, unreadable or malformed; an OSError.";
+  py::register_exception<Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
+      .attr("__doc__") = "A mesh file that is missing or cannot be opened; an OSError.";
 
   // The enums are listed once, here; Python code reads them from
   // __members__, never from a list of its own.
@@ -356,24 +363,44 @@ PYBIND11_MODULE(_expmap, m) {
 
   m.def(
       "read_mesh",
-      [](py::handle path_object, bool triangulate) {
+      [](py::handle path_object, bool triangulate, bool repair, bool return_file_index) {
         // str, bytes or any os.PathLike (pathlib.Path).
         const std::string path =
             py::module_::import("os").attr("fsdecode")(path_object).cast<std::string>();
+        if (!std::ifstream(path))
+          throw Mesh_file_error("cannot open mesh file '" + path + "' (missing or not readable)");
         Mesh mesh;
+        expmap::IO::Mesh_reading_options options;
+        options.triangulate = triangulate;
+        options.repair = repair;
+        expmap::IO::Mesh_reading_report report;
         {
           py::gil_scoped_release release;
-          mesh = expmap_cli::read_mesh_file(path, triangulate);
+          report = expmap::IO::read_triangle_mesh(path, mesh, options);
         }
-        return arrays_from_mesh(mesh);
+        // What the reader repaired, as the command-line program's notes.
+        for (const std::string& note : report.notes)
+          if (PyErr_WarnEx(PyExc_UserWarning, ("'" + path + "': " + note).c_str(), 1) != 0)
+            throw py::error_already_set();  // warnings turned into errors
+        py::tuple arrays = arrays_from_mesh(mesh);
+        if (!return_file_index) return py::object(arrays);
+        return py::object(py::make_tuple(arrays[0], arrays[1], array_of(std::vector<std::int64_t>(
+                                                                   report.file_index.begin(),
+                                                                   report.file_index.end()))));
       },
-      py::arg("path"), py::arg("triangulate") = false,
-      "read_mesh(path, triangulate=False) -> (vertices, faces)\n\n"
-      "Reads a .off, .obj, .ply or .stl mesh with the command-line program's\n"
-      "reader: vertices float64 n x 3 in file order, faces int64 m x 3. With\n"
-      "triangulate, polygonal faces are split into triangles (no vertex added).\n"
-      "Raises OSError (MeshFileError) if the file is missing or malformed and\n"
-      "ValueError if a face is not a triangle.");
+      py::arg("path"), py::arg("triangulate") = true, py::arg("repair") = false,
+      py::arg("return_file_index") = false,
+      "read_mesh(path, triangulate=True, repair=False, return_file_index=False)\n"
+      "    -> (vertices, faces) or (vertices, faces, file_index)\n\n"
+      "Reads a .off, .obj, .ply or .stl mesh with the library's reader\n"
+      "(expmap::IO::read_triangle_mesh, as the command-line program does): vertices\n"
+      "float64 n x 3, faces int64 m x 3. Faces that are not an oriented 2-manifold\n"
+      "are read as a polygon soup and oriented; polygons are split into triangles\n"
+      "(no vertex added) unless triangulate is False; repair removes degenerate\n"
+      "faces and needles, and with them vertices, so vertex i is then file vertex\n"
+      "file_index[i]. Each repair is reported as a UserWarning.\n"
+      "Raises OSError (MeshFileError) if the file cannot be opened and ValueError\n"
+      "if it is malformed or (triangulate=False) has a face that is not a triangle.");
 
   bind_heat(m);
   bind_plain_method<expmap::Discrete_exponential_map<Mesh>>(

@@ -175,19 +175,21 @@ def test_bad_queries_raise_value_error(cactus, method):
             pytest.fail("accepted compute_many(%r, %r)" % (sources, kwargs))
 
 
-def test_read_mesh_errors(tmp_path):
+def test_read_mesh_errors_and_repairs(tmp_path):
     with pytest.raises(OSError, match="cannot open"):
         expmap.read_mesh(str(tmp_path / "missing.off"))
     garbage = tmp_path / "garbage.off"
     garbage.write_text("OFF\n3 1 0\n0 0 0\n1 0\n")
-    with pytest.raises(OSError):
+    with pytest.raises(ValueError):
         expmap.read_mesh(str(garbage))
     quad = tmp_path / "quad.off"
     quad.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
     with pytest.raises(ValueError, match="not a triangle"):
-        expmap.read_mesh(str(quad))
-    V, F = expmap.read_mesh(quad, triangulate=True)  # any os.PathLike
+        expmap.read_mesh(str(quad), triangulate=False)
+    with pytest.warns(UserWarning, match="triangulated 1 faces"):
+        V, F, file_index = expmap.read_mesh(quad, return_file_index=True)  # any os.PathLike
     assert V.shape == (4, 3) and F.shape == (2, 3)
+    np.testing.assert_array_equal(file_index, np.arange(4))
 
 
 def test_everything_is_documented():
@@ -201,6 +203,7 @@ def test_everything_is_documented():
             assert getattr(cls, member).__doc__, (cls, member)
 
 
+@pytest.mark.filterwarnings("ignore:.*triangulated")  # hole.off has polygons
 def test_damaged_real_meshes_raise_or_give_finite_maps():
     """Real meshes with faces removed, points merged, flattened or scaled to
     extremes: every method either raises ValueError / RuntimeError or
@@ -208,7 +211,7 @@ def test_damaged_real_meshes_raise_or_give_finite_maps():
     from conftest import mesh_path
 
     rng = np.random.default_rng(12)
-    bases = [expmap.read_mesh(mesh_path(name), triangulate=True)
+    bases = [expmap.read_mesh(mesh_path(name))
              for name in ("icosahedron.off", "octahedron.off", "fold.off", "star.off", "hole.off")]
     classes = (expmap.HeatExponentialMap, expmap.DiscreteExponentialMap,
                expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap)

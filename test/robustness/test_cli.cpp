@@ -54,7 +54,7 @@ struct Cli_fixture {
                                        std::to_string(stamp) + "_" + std::to_string(counter++));
     fs::create_directories(dir);
     write_grid(dir / "grid.off", 6);
-    // Two quads: a valid polygon mesh the library must refuse, not triangulate.
+    // Two quads: a valid polygon mesh, triangulated unless --no-triangulate.
     std::ofstream(dir / "quads.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
                                         "4 0 1 4 3\n4 1 2 5 4\n";
   }
@@ -184,11 +184,14 @@ BOOST_AUTO_TEST_CASE(both_angle_estimators_answer) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(triangulate_makes_polygon_meshes_usable) {
-  const int status = run("compute " + file("quads.off") +
-                         " --triangulate --source 1 --fraction 1 -o " + file("map.csv"));
-  BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
-  BOOST_TEST(read_lines(dir / "map.csv").size() == 7u);  // all six vertices, none added
+BOOST_AUTO_TEST_CASE(polygon_meshes_are_triangulated_by_default) {
+  for (const char* flag : {"", " --triangulate"}) {
+    const int status = run("compute " + file("quads.off") + flag + " --source 1 --fraction 1 -o " +
+                           file("map.csv"));
+    BOOST_TEST_REQUIRE(status == 0, "stderr: " << err());
+    BOOST_TEST(read_lines(dir / "map.csv").size() == 7u);  // all six vertices, none added
+    BOOST_TEST(err().rfind("expmap: note: ", 0) == 0, err());
+  }
 }
 
 BOOST_AUTO_TEST_CASE(help_documents_every_option) {
@@ -196,15 +199,17 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--laplacian", "--angles", "--reference", "--triangulate", "--output"})
+        "--laplacian", "--angles", "--reference", "--no-triangulate", "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
 BOOST_AUTO_TEST_CASE(runtime_errors_exit_with_status_1) {
   check_error("compute " + file("missing.off") + " --source 0 --vertices 10 -o " + file("a.csv"),
               1);
-  check_error("compute " + file("quads.off") + " --source 0 --vertices 3 -o " + file("a.csv"), 1);
-  BOOST_TEST(err().find("4 vertices") != std::string::npos, err());
+  check_error("compute " + file("quads.off") + " --no-triangulate --source 0 --vertices 3 -o " +
+                  file("a.csv"),
+              1);
+  BOOST_TEST(err().find("more than three vertices") != std::string::npos, err());
   BOOST_TEST(!std::filesystem::exists(dir / "a.csv"));
 }
 
