@@ -154,6 +154,8 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     """
     from distributed import as_completed
 
+    if isinstance(meshes, (str, bytes, os.PathLike)):
+        raise ValueError("meshes must be a list of mesh paths, not one path")
     meshes = [os.fspath(m) for m in meshes]
     if len(set(meshes)) != len(meshes):
         raise ValueError("a mesh is listed twice")

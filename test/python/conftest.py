@@ -10,6 +10,11 @@ import pytest
 import expmap
 
 
+def pytest_configure(config):
+    # Debian 12's distributed 2022.12 on tornado 6.2: noise, not ours.
+    config.addinivalue_line("filterwarnings", "ignore:make_current is deprecated:DeprecationWarning")
+
+
 def data_dir():
     return os.environ.get("EXPMAP_DATA_DIR", os.path.join(os.path.dirname(__file__), "..", "..", "data", "meshes"))
 

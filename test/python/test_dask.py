@@ -113,3 +113,7 @@ def test_bad_arguments_raise_value_error(meshes_and_sources):
                    {"vertices": 5, "out_dir": "/nonexistent/folder"}):
         with pytest.raises(ValueError):
             expmap.dask.map_meshes(None, meshes, **kwargs)
+    with pytest.raises(ValueError, match="list"):
+        expmap.dask.map_meshes(None, meshes[0], vertices=5)
+    with pytest.raises(ValueError, match="twice"):
+        expmap.dask.map_meshes(None, [meshes[0], meshes[0]], vertices=5)
