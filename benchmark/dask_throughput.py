@@ -19,6 +19,8 @@ import argparse
 import logging
 import time
 
+import dask
+
 import expmap
 import expmap.dask
 
@@ -36,9 +38,10 @@ def one_process(meshes, patch, threads):
 def through_cluster(meshes, patch, workers, threads, chunk_size):
     from distributed import Client, LocalCluster
 
-    with LocalCluster(n_workers=workers, threads_per_worker=threads, processes=True, host="127.0.0.1",
-                      dashboard_address=None, silence_logs=logging.ERROR) as cluster, \
-            Client(cluster) as client:
+    with dask.config.set({"distributed.scheduler.work-stealing": False}):  # as the manual says
+        cluster = LocalCluster(n_workers=workers, threads_per_worker=threads, processes=True,
+                               host="127.0.0.1", dashboard_address=None, silence_logs=logging.ERROR)
+    with cluster, Client(cluster) as client:
         client.wait_for_workers(workers)
         start = time.perf_counter()
         results = expmap.dask.map_meshes(client, meshes, fraction=patch["fraction"], chunk_size=chunk_size)

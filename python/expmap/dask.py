@@ -19,7 +19,10 @@ On a real cluster::
     expmap.dask.map_meshes(client, paths, fraction=0.01, out_dir="maps/")
 
 Every worker needs the ``expmap`` package importable and the mesh files at
-the same paths (a shared file system).
+the same paths (a shared file system). Run the scheduler with work stealing
+off (``DASK_DISTRIBUTED__SCHEDULER__WORK_STEALING=False``): otherwise it
+moves queued chunks to idle workers, which then precompute the mesh again
+(correct, but twice the precomputations and their memory).
 """
 
 import collections
@@ -62,16 +65,28 @@ def _precomputed(path, method, options):
         built = METHODS[method](vertices, faces, **options)
         with _cache_lock:
             _cache[key] = built
+            _precomputed_paths.append(path)
             while len(_cache) > _CACHE_SIZE:
                 _cache.popitem(last=False)
         return built
 
 
+_precomputed_paths = []  # every precomputation this process made, in order
+
+
 def cached_meshes():
-    """The mesh paths precomputed in this process (on a worker: that worker's
-    cache), e.g. ``client.run(expmap.dask.cached_meshes)``."""
+    """The mesh paths whose precomputation this process holds now (on a
+    worker: its cache), e.g. ``client.run(expmap.dask.cached_meshes)``."""
     with _cache_lock:
         return sorted({key[0] for key in _cache})
+
+
+def precomputed_meshes():
+    """Every mesh path this process has precomputed, in order, repeats
+    included: a path listed twice was evicted from the cache (or its
+    options differed) and precomputed again."""
+    with _cache_lock:
+        return list(_precomputed_paths)
 
 
 def _prepare(path, method, options):
@@ -183,6 +198,7 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     # next when one is done: all at once, a worker would precompute more
     # meshes than its cache holds before mapping any, then redo them.
     waiting = list(reversed(meshes))
+    position = {mesh: i for i, mesh in enumerate(meshes)}
     in_flight = len(client.scheduler_info().get("workers", {})) + 1
     prepared_mesh = {}  # future key -> mesh
     chunk_futures = {}  # future key -> (mesh, chunk number)
@@ -229,9 +245,13 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
                     done[mesh][0] = _empty_chunk()
                     chunks_of[mesh] = 1
                     finish(mesh)
+                # Earlier meshes first: a worker that takes over another's chunks
+                # then works through one mesh at a time instead of alternating
+                # between more meshes than its cache holds.
                 for number, piece in enumerate(pieces):
                     f = client.submit(_map_chunk, mesh, method, options, patch, piece,
-                                      workers=[address], allow_other_workers=True, pure=False)
+                                      workers=[address], allow_other_workers=True, pure=False,
+                                      priority=-position[mesh])
                     chunk_futures[f.key] = (mesh, number)
                     work.add(f)
                 continue
