@@ -78,8 +78,12 @@ def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path):
                 loaded[mesh] = {name: npz[name] for name in npz.files}
         assert_same_as_single_process(loaded, meshes_and_sources)
 
-        # Errors on a worker come back as the library's exceptions.
+        # No sources: empty arrays, one offset.
         elephant = list(meshes_and_sources)[0]
+        empty = expmap.dask.map_meshes(client, [elephant], sources={elephant: []}, vertices=5)[elephant]
+        assert len(empty["sources"]) == len(empty["vertex"]) == 0 and list(empty["offsets"]) == [0]
+
+        # Errors on a worker come back as the library's exceptions.
         with pytest.raises(OSError, match="cannot open"):
             expmap.dask.map_meshes(client, [str(tmp_path / "missing.off")], vertices=5)
         with pytest.raises(ValueError, match="out of range"):
