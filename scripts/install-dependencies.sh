@@ -12,7 +12,9 @@ packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev
           libboost-graph-dev libboost-test-dev libopenblas0-pthread
           libopenmesh-dev
-          python3-numpy  # the test that loads `expmap batch` .npz output with NumPy
+          # The Python module, its tests and its Dask layer (python/, test/python/),
+          # and the test that loads `expmap batch` .npz output with NumPy.
+          python3-dev python3-numpy pybind11-dev python3-pytest python3-distributed
           "$@")
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,63 @@
+# Copyright (c) 2026 expmap contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Local exponential maps (geodesic polar coordinates) on triangle meshes.
+
+NumPy in, NumPy out::
+
+    import expmap
+    V, F = expmap.read_mesh("data/meshes/elephant.off")
+    heat = expmap.HeatExponentialMap(V, F)            # precomputes once
+    local = heat.compute(0, fraction=0.05)             # one map
+    local.vertices, local.r, local.theta, local.uv     # NumPy arrays
+    batch = heat.compute_many(range(100), vertices=50, threads=0)  # many, no GIL
+    batch.offsets, batch.vertex, batch.u, batch.v, batch.errors
+
+The four methods: HeatExponentialMap (Herholz & Alexa 2019, the smoothed
+map by heat diffusion), DiscreteExponentialMap (Schmidt et al. 2006),
+GeodesicPolarCoordinates (Melvaer & Reimers 2012) and ExactExponentialMap
+(exact polyhedral geodesics, a slow reference). Invalid input raises
+ValueError (expmap.InvalidInput) with the library's message; a failed
+computation raises RuntimeError (expmap.ComputationError). expmap.dask
+spreads many meshes over a Dask cluster.
+"""
+
+from ._expmap import (
+    AngleEstimator,
+    BatchMaps,
+    ComputationError,
+    DiscreteExponentialMap,
+    ExactExponentialMap,
+    GeodesicPolarCoordinates,
+    HeatExponentialMap,
+    InvalidInput,
+    LaplacianMode,
+    LocalMap,
+    MeshFileError,
+    PoissonRegularization,
+    read_mesh,
+)
+
+#: The method classes by the names the command-line program uses (--method).
+METHODS = {
+    "heat": HeatExponentialMap,
+    "dem": DiscreteExponentialMap,
+    "dgpc": GeodesicPolarCoordinates,
+    "exact": ExactExponentialMap,
+}
+
+__all__ = [
+    "AngleEstimator",
+    "BatchMaps",
+    "ComputationError",
+    "DiscreteExponentialMap",
+    "ExactExponentialMap",
+    "GeodesicPolarCoordinates",
+    "HeatExponentialMap",
+    "InvalidInput",
+    "LaplacianMode",
+    "LocalMap",
+    "METHODS",
+    "MeshFileError",
+    "PoissonRegularization",
+    "read_mesh",
+]

@@ -1,0 +1,425 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The Python module `expmap._expmap`: the four methods as classes over a
+// `CGAL::Surface_mesh` built from NumPy arrays. Queries run without the GIL,
+// so Python threads (and Dask workers) can query one object at once.
+
+#include "Map_arrays.h"
+#include "Mesh_from_arrays.h"
+
+#include <expmap/Batch.h>
+#include <expmap/Discrete_exponential_map.h>
+#include <expmap/Errors.h>
+#include <expmap/Exact_exponential_map.h>
+#include <expmap/Geodesic_polar_coordinates.h>
+#include <expmap/Heat_exponential_map.h>
+#include <expmap/IO/read_triangle_mesh.h>
+#include <expmap/Patch.h>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <climits>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace py = pybind11;
+using namespace expmap_python;
+
+namespace {
+
+/// A mesh file that cannot be opened: Python's OSError, as for open().
+class Mesh_file_error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// A method object and the mesh it was built on (kept alive with it).
+template <class Method>
+struct Bound_method {
+  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<const Method> method;
+};
+
+template <class Method, class Make>
+Bound_method<Method> bind_to_arrays(py::handle vertices, py::handle faces, Make make) {
+  Bound_method<Method> bound;
+  bound.mesh = std::make_unique<Mesh>(mesh_from_arrays(vertices, faces));
+  py::gil_scoped_release release;  // the precomputation can take seconds
+  bound.method = make(*bound.mesh);
+  return bound;
+}
+
+/// A non-negative integer from any Python integer (int, numpy.int64, ...).
+std::size_t index_argument(py::handle value, const char* name) {
+  py::int_ integer;
+  try {
+    integer = py::reinterpret_steal<py::int_>(PyNumber_Index(value.ptr()));
+    if (!integer) throw py::error_already_set();
+  } catch (py::error_already_set&) {
+    throw expmap::Invalid_input(std::string(name) + " must be an integer (got " +
+                                py::repr(value).cast<std::string>() + ")");
+  }
+  const long long i = PyLong_AsLongLong(integer.ptr());
+  if (i == -1 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw expmap::Invalid_input(std::string(name) + " is out of range (got " +
+                                py::str(integer).cast<std::string>() + ")");
+  }
+  if (i < 0)
+    throw expmap::Invalid_input(std::string(name) + " must not be negative (got " +
+                                std::to_string(i) + ")");
+  return static_cast<std::size_t>(i);
+}
+
+/// The patch from exactly one of the keyword arguments.
+expmap::Patch patch_argument(std::size_t mesh_vertices, std::optional<double> radius,
+                             std::optional<double> fraction, py::object count,
+                             py::object vertex_set) {
+  const int given = radius.has_value() + fraction.has_value() + !count.is_none() +
+                    !vertex_set.is_none();
+  if (given != 1)
+    throw expmap::Invalid_input(
+        "give exactly one of radius=, fraction=, vertices= or vertex_set= (got " +
+        std::to_string(given) + ")");
+  if (radius) return expmap::Patch::geodesic_radius(*radius);
+  if (fraction) return expmap::Patch::fraction(*fraction);
+  if (!count.is_none()) {
+    const std::size_t k = index_argument(count, "vertices");
+    return expmap::Patch::vertex_count(k);
+  }
+  const Index_array set = checked_indices(vertex_set, "vertex_set", mesh_vertices);
+  return expmap::Patch::vertex_set(std::vector<std::size_t>(set.data(), set.data() + set.size()));
+}
+
+/// The query options from `reference`: None or 3 numbers (the library
+/// checks that they are finite and not along the normal).
+expmap::Query_options query_argument(py::handle reference) {
+  expmap::Query_options query;
+  if (reference.is_none()) return query;
+  py::array array = py::array::ensure(reference);
+  if (!array || array.ndim() != 1 || array.shape(0) != 3 ||
+      std::string("iuf").find(array.dtype().kind()) == std::string::npos)
+    throw expmap::Invalid_input("reference must be 3 numbers (got " +
+                                py::repr(reference).cast<std::string>() + ")");
+  const Real_array xyz = Real_array::ensure(array);
+  query.reference_direction = std::array<double, 3>{{xyz.at(0), xyz.at(1), xyz.at(2)}};
+  return query;
+}
+
+/// An option given as a member of the bound enum `E` or by its name.
+template <class E>
+E enum_argument(py::handle value, const char* option) {
+  const py::dict members = py::type::of<E>().attr("__members__");
+  if (py::isinstance<py::str>(value)) {
+    std::string name = value.cast<std::string>();
+    std::replace(name.begin(), name.end(), '-', '_');  // the CLI spells them with hyphens
+    if (members.contains(name)) return members[name.c_str()].template cast<E>();
+  } else if (py::isinstance<E>(value)) {
+    return value.cast<E>();
+  }
+  std::string known;
+  for (auto item : members) known += (known.empty() ? "" : ", ") + item.first.cast<std::string>();
+  throw expmap::Invalid_input(std::string(option) + " must be one of " + known + " (got " +
+                              py::repr(value).cast<std::string>() + ")");
+}
+
+const char* const patch_doc =
+    "The patch is exactly one of: ``radius`` (every vertex within that geodesic\n"
+    "distance), ``fraction`` (the nearest fraction of all vertices, in (0, 1]),\n"
+    "``vertices`` (the k nearest vertices) or ``vertex_set`` (these vertex\n"
+    "indices). ``reference`` is the direction of angle 0 (3 floats), projected\n"
+    "onto the source's tangent plane; default: the x axis, or the y axis where\n"
+    "the normal is within 30 degrees of x.\n";
+
+/// compute(), compute_many() and the shared properties of every method class.
+template <class Method>
+void add_queries(py::class_<Bound_method<Method>>& c) {
+  using Bound = Bound_method<Method>;
+  c.def(
+      "compute",
+      [](const Bound& b, py::handle source, std::optional<double> radius,
+         std::optional<double> fraction, py::object vertices, py::object vertex_set,
+         py::handle reference) {
+        const std::size_t s = index_argument(source, "source");
+        const expmap::Patch patch =
+            patch_argument(b.method->number_of_vertices(), radius, fraction, vertices, vertex_set);
+        const expmap::Query_options query = query_argument(reference);
+        Map map;
+        {
+          py::gil_scoped_release release;
+          map = b.method->compute_by_index(s, patch, query);
+        }
+        return Map_arrays(map);
+      },
+      py::arg("source"), py::kw_only(), py::arg("radius") = py::none(),
+      py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
+      py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
+      (std::string("compute(source, *, radius=None, fraction=None, vertices=None, "
+                   "vertex_set=None, reference=None) -> LocalMap\n\n"
+                   "Geodesic polar coordinates around vertex ``source`` (0-based row of\n"
+                   "the vertex array). ") +
+       patch_doc +
+       "\nRaises ValueError for invalid input (a source out of range or isolated, a\n"
+       "bad patch) and RuntimeError when the computation fails (e.g. heat\n"
+       "underflow: choose a larger time factor or a smaller patch).")
+          .c_str());
+  c.def(
+      "compute_many",
+      [](const Bound& b, py::handle sources_object, std::optional<double> radius,
+         std::optional<double> fraction, py::object vertices, py::object vertex_set,
+         py::handle reference, py::handle threads_object) {
+        const std::size_t n = b.method->number_of_vertices();
+        const Index_array checked = checked_indices(sources_object, "sources", n);
+        const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
+        const expmap::Patch patch = patch_argument(n, radius, fraction, vertices, vertex_set);
+        const expmap::Query_options query = query_argument(reference);
+        const std::size_t threads = index_argument(threads_object, "threads");
+        if (threads > 4096)
+          throw expmap::Invalid_input("threads must be at most 4096 (got " +
+                                      std::to_string(threads) + ")");
+        expmap::Batch_options options;
+        options.threads = static_cast<unsigned>(threads);
+        expmap::Batch_result<Mesh::Vertex_index> batch;
+        {
+          py::gil_scoped_release release;
+          batch = b.method->compute_many_by_index(sources, patch, options, query);
+        }
+        return Batch_arrays(sources, batch.maps, std::move(batch.errors));
+      },
+      py::arg("sources"), py::kw_only(), py::arg("radius") = py::none(),
+      py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
+      py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
+      py::arg("threads") = 0,
+      (std::string("compute_many(sources, *, radius=None, fraction=None, vertices=None, "
+                   "vertex_set=None, reference=None, threads=0) -> BatchMaps\n\n"
+                   "One map per source (a 1-D integer array), computed on ``threads``\n"
+                   "threads (0: one per core) without holding the GIL. ") +
+       patch_doc +
+       "\nA query that fails does not end the batch: its source gets no rows and\n"
+       "its message in ``errors``. Raises ValueError for invalid arguments\n"
+       "(sources out of range, a bad patch).")
+          .c_str());
+  c.def_property_readonly(
+      "number_of_vertices", [](const Bound& b) { return b.method->number_of_vertices(); },
+      "Number of vertices of the mesh.");
+}
+
+template <class Method>
+py::class_<Bound_method<Method>> bind_plain_method(py::module_& m, const char* name,
+                                                   const std::string& doc) {
+  py::class_<Bound_method<Method>> c(m, name, doc.c_str());
+  c.def(py::init([](py::handle vertices, py::handle faces) {
+          return bind_to_arrays<Method>(vertices, faces, [](const Mesh& mesh) {
+            return std::make_unique<const Method>(mesh);
+          });
+        }),
+        py::arg("vertices"), py::arg("faces"),
+        "Builds the method on the mesh (vertices: float array n x 3; faces:\n"
+        "integer array m x 3, each row a triangle of vertex rows).\n"
+        "Raises ValueError for arrays of the wrong shape or dtype, non-finite\n"
+        "coordinates, out-of-range or repeated indices, faces that do not form\n"
+        "an oriented 2-manifold, and meshes the method rejects.");
+  add_queries(c);
+  return c;
+}
+
+void bind_heat(py::module_& m) {
+  using Method = expmap::Heat_exponential_map<Mesh>;
+  using Bound = Bound_method<Method>;
+  const expmap::Heat_options defaults;
+  py::class_<Bound> c(
+      m, "HeatExponentialMap",
+      "The smoothed exponential map of Herholz & Alexa (Computer Graphics Forum\n"
+      "2019): distances and angles from heat diffusion, by localized solves on\n"
+      "Cholesky factors of the whole mesh, computed once at construction.\n\n"
+      "    heat = expmap.HeatExponentialMap(V, F)\n"
+      "    local = heat.compute(0, fraction=0.05)\n"
+      "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
+  c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
+                    std::optional<double> distance_time_factor, py::handle laplacian,
+                    py::handle regularization, double region_growth,
+                    py::handle angle_estimator) {
+          expmap::Heat_options options;
+          options.time_factor = time_factor;
+          options.distance_time_factor = distance_time_factor;
+          options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
+          options.regularization =
+              enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
+          options.region_growth = region_growth;
+          options.angle_estimator =
+              enum_argument<expmap::Angle_estimator>(angle_estimator, "angle_estimator");
+          return bind_to_arrays<Method>(vertices, faces, [&](const Mesh& mesh) {
+            return std::make_unique<const Method>(mesh, options);
+          });
+        }),
+        py::arg("vertices"), py::arg("faces"), py::kw_only(),
+        py::arg("time_factor") = defaults.time_factor,
+        py::arg("distance_time_factor") = defaults.distance_time_factor,
+        py::arg("laplacian") = defaults.laplacian,
+        py::arg("regularization") = defaults.regularization,
+        py::arg("region_growth") = defaults.region_growth,
+        py::arg("angle_estimator") = defaults.angle_estimator,
+        "Precomputes operators and factorizations of the mesh (vertices: float\n"
+        "array n x 3; faces: integer array m x 3).\n\n"
+        "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
+        "    larger is smoother.\n"
+        "distance_time_factor: time factor of the heat the distance comes from,\n"
+        "    when it should differ (one more factorization); None: time_factor.\n"
+        "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
+        "regularization: a PoissonRegularization or its name.\n"
+        "region_growth: a query solves on a region this many times larger than the\n"
+        "    patch (at least 1).\n"
+        "angle_estimator: an AngleEstimator or its name.\n\n"
+        "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
+  add_queries(c);
+  c.def_property_readonly(
+      "time_step", [](const Bound& b) { return b.method->time_step(); },
+      "Diffusion time t of the heat the angles come from.");
+  c.def_property_readonly(
+      "distance_time_step", [](const Bound& b) { return b.method->distance_time_step(); },
+      "Diffusion time of the heat the distance comes from.");
+  c.def_property_readonly(
+      "mean_edge_length", [](const Bound& b) { return b.method->mean_edge_length(); },
+      "Mean edge length h of the mesh.");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_expmap, m) {
+  m.doc() =
+      "Local exponential maps (geodesic polar coordinates) on triangle meshes: the\n"
+      "compiled part of the `expmap` package.";
+
+  py::register_exception<expmap::Invalid_input>(m, "InvalidInput", PyExc_ValueError)
+      .attr("__doc__") = "Input the library cannot use (expmap::Invalid_input); a ValueError.";
+  py::register_exception<expmap::Computation_error>(m, "ComputationError", PyExc_RuntimeError)
+      .attr("__doc__") =
+      "A computation that failed on valid input (expmap::Computation_error), e.g. heat\n"
+      "underflow; a RuntimeError.";
+  py::register_exception<Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
+      .attr("__doc__") = "A mesh file that is missing or cannot be opened; an OSError.";
+
+  // The enums are listed once, here; Python code reads them from
+  // __members__, never from a list of its own.
+  py::enum_<expmap::Laplacian_mode>(m, "LaplacianMode",
+                                    "Which triangulation the Laplacian is built on.")
+      .value("direct", expmap::Laplacian_mode::direct)
+      .value("intrinsic_delaunay", expmap::Laplacian_mode::intrinsic_delaunay);
+  py::enum_<expmap::Poisson_regularization>(
+      m, "PoissonRegularization", "How the singular Poisson system of the distance is made definite.")
+      .value("pinned_vertex", expmap::Poisson_regularization::pinned_vertex)
+      .value("cgal_compatible", expmap::Poisson_regularization::cgal_compatible);
+  py::enum_<expmap::Angle_estimator>(m, "AngleEstimator",
+                                     "How the direction of the geodesic is read off the heat.")
+      .value("heat_gradient", expmap::Angle_estimator::heat_gradient)
+      .value("log_heat_gradient", expmap::Angle_estimator::log_heat_gradient)
+      .value("log_heat_quadratic_fit", expmap::Angle_estimator::log_heat_quadratic_fit);
+
+  py::class_<Map_arrays>(m, "LocalMap",
+                         "One local map: the patch vertices, nearest first, and their polar\n"
+                         "(r, theta) and Cartesian (uv) coordinates.")
+      .def_readonly("source", &Map_arrays::source, "The source vertex.")
+      .def_readonly("vertices", &Map_arrays::vertices, "Patch vertex indices (int64), nearest first.")
+      .def_readonly("r", &Map_arrays::r, "Geodesic distance of each patch vertex.")
+      .def_readonly("theta", &Map_arrays::theta, "Polar angle in (-pi, pi].")
+      .def_readonly("uv", &Map_arrays::uv, "n x 2: (r cos theta, r sin theta).")
+      .def_readonly("normal", &Map_arrays::normal, "Unit normal of the tangent plane.")
+      .def_readonly("axis_u", &Map_arrays::axis_u, "Tangent axis of angle 0.")
+      .def_readonly("axis_v", &Map_arrays::axis_v, "Tangent axis of angle pi/2.")
+      .def("__len__", [](const Map_arrays& a) { return a.vertices.size(); })
+      .def("__repr__", [](const Map_arrays& a) {
+        return "<LocalMap source " + std::to_string(a.source) + ", " +
+               std::to_string(a.vertices.size()) + " vertices>";
+      });
+
+  py::class_<Batch_arrays>(
+      m, "BatchMaps",
+      "Many maps in the layout of `expmap batch -o OUT.npz`: rows offsets[i] to\n"
+      "offsets[i+1] of vertex, r, theta, u, v belong to sources[i]. A source whose\n"
+      "query failed has no rows and its message in errors[i] ('' otherwise).")
+      .def_readonly("sources", &Batch_arrays::sources, "The sources (int64, k).")
+      .def_readonly("offsets", &Batch_arrays::offsets, "Row range of each source (int64, k + 1).")
+      .def_readonly("vertex", &Batch_arrays::vertex, "Patch vertex of each row (int64).")
+      .def_readonly("r", &Batch_arrays::r, "Geodesic distance of each row.")
+      .def_readonly("theta", &Batch_arrays::theta, "Polar angle of each row.")
+      .def_readonly("u", &Batch_arrays::u, "r cos theta of each row.")
+      .def_readonly("v", &Batch_arrays::v, "r sin theta of each row.")
+      .def_readonly("errors", &Batch_arrays::errors, "Per source: '' or why its query failed.")
+      .def_property_readonly("failures", &Batch_arrays::failures, "How many queries failed.")
+      .def("as_dict", &Batch_arrays::as_dict,
+           "The seven arrays by name (sources, offsets, vertex, r, theta, u, v), as\n"
+           "numpy.savez takes them.")
+      .def("__len__", [](const Batch_arrays& b) { return b.errors.size(); })
+      .def("__repr__", [](const Batch_arrays& b) {
+        return "<BatchMaps " + std::to_string(b.errors.size()) + " sources, " +
+               std::to_string(b.vertex.size()) + " rows, " + std::to_string(b.failures()) +
+               " failed>";
+      });
+
+  m.def(
+      "read_mesh",
+      [](py::handle path_object, bool triangulate, bool repair, bool return_file_index) {
+        // str, bytes or any os.PathLike (pathlib.Path).
+        const std::string path =
+            py::module_::import("os").attr("fsdecode")(path_object).cast<std::string>();
+        if (!std::ifstream(path))
+          throw Mesh_file_error("cannot open mesh file '" + path + "' (missing or not readable)");
+        Mesh mesh;
+        expmap::IO::Mesh_reading_options options;
+        options.triangulate = triangulate;
+        options.repair = repair;
+        expmap::IO::Mesh_reading_report report;
+        {
+          py::gil_scoped_release release;
+          report = expmap::IO::read_triangle_mesh(path, mesh, options);
+        }
+        // What the reader repaired, as the command-line program's notes.
+        for (const std::string& note : report.notes)
+          if (PyErr_WarnEx(PyExc_UserWarning, ("'" + path + "': " + note).c_str(), 1) != 0)
+            throw py::error_already_set();  // warnings turned into errors
+        py::tuple arrays = arrays_from_mesh(mesh);
+        if (!return_file_index) return py::object(arrays);
+        return py::object(py::make_tuple(arrays[0], arrays[1], array_of(std::vector<std::int64_t>(
+                                                                   report.file_index.begin(),
+                                                                   report.file_index.end()))));
+      },
+      py::arg("path"), py::arg("triangulate") = true, py::arg("repair") = false,
+      py::arg("return_file_index") = false,
+      "read_mesh(path, triangulate=True, repair=False, return_file_index=False)\n"
+      "    -> (vertices, faces) or (vertices, faces, file_index)\n\n"
+      "Reads a .off, .obj, .ply or .stl mesh with the library's reader\n"
+      "(expmap::IO::read_triangle_mesh, as the command-line program does): vertices\n"
+      "float64 n x 3, faces int64 m x 3. Faces that are not an oriented 2-manifold\n"
+      "are read as a polygon soup and oriented; polygons are split into triangles\n"
+      "(no vertex added) unless triangulate is False; repair removes degenerate\n"
+      "faces and needles, and with them vertices, so vertex i is then file vertex\n"
+      "file_index[i]. Each repair is reported as a UserWarning.\n"
+      "Raises OSError (MeshFileError) if the file cannot be opened and ValueError\n"
+      "if it is malformed or (triangulate=False) has a face that is not a triangle.");
+
+  bind_heat(m);
+  bind_plain_method<expmap::Discrete_exponential_map<Mesh>>(
+      m, "DiscreteExponentialMap",
+      "The discrete exponential map (Schmidt et al., SIGGRAPH 2006): a Dijkstra\n"
+      "front that carries tangent vectors from vertex to vertex.\n\n"
+      "    dem = expmap.DiscreteExponentialMap(V, F)\n"
+      "    local = dem.compute(0, radius=0.1)\n");
+  bind_plain_method<expmap::Geodesic_polar_coordinates<Mesh>>(
+      m, "GeodesicPolarCoordinates",
+      "Discrete geodesic polar coordinates (Melvaer & Reimers, Computer Graphics\n"
+      "Forum 2012): a Dijkstra-like front with distances and angles updated\n"
+      "across triangles.\n\n"
+      "    dgpc = expmap.GeodesicPolarCoordinates(V, F)\n"
+      "    local = dgpc.compute(0, vertices=200)\n");
+  bind_plain_method<expmap::Exact_exponential_map<Mesh>>(
+      m, "ExactExponentialMap",
+      "The exact polyhedral exponential map (CGAL's Surface_mesh_shortest_path):\n"
+      "slow, a reference for the others.\n\n"
+      "    exact = expmap.ExactExponentialMap(V, F)\n"
+      "    local = exact.compute(0, fraction=0.01)\n");
+}

@@ -1,0 +1,75 @@
+# Copyright (c) 2026 expmap contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The module gives the C++ library's results, vertex for vertex: compared
+with the CSV the command-line program writes for the same mesh file."""
+
+import csv
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import expmap
+
+CLI_NAMES = {"heat": expmap.HeatExponentialMap, "dem": expmap.DiscreteExponentialMap,
+             "dgpc": expmap.GeodesicPolarCoordinates, "exact": expmap.ExactExponentialMap}
+
+
+def cli_map(tmp_path, mesh, method, source, *patch):
+    cli = os.environ.get("EXPMAP_CLI")
+    if not cli:
+        pytest.skip("EXPMAP_CLI is not set (ctest sets it)")
+    out = tmp_path / ("%s-%d.csv" % (method, source))
+    subprocess.run([cli, "compute", mesh, "--method", method, "--source", str(source), *patch,
+                    "-o", str(out)], check=True, stdout=subprocess.DEVNULL, timeout=600)
+    with open(out) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in ("vertex", "r", "theta", "u", "v")}
+
+
+def assert_same_map(local, reference):
+    # The CSV holds the doubles exactly (max_digits10 digits), and both sides
+    # build the same Surface_mesh: equal to the last bit.
+    np.testing.assert_array_equal(local.vertices, reference["vertex"].astype(np.int64))
+    np.testing.assert_array_equal(local.r, reference["r"])
+    np.testing.assert_array_equal(local.theta, reference["theta"])
+    np.testing.assert_array_equal(local.uv[:, 0], reference["u"])
+    np.testing.assert_array_equal(local.uv[:, 1], reference["v"])
+
+
+@pytest.mark.parametrize("method", ["heat", "dem", "dgpc"])
+def test_same_maps_as_the_command_line_program(tmp_path, elephant, method):
+    path, V, F = elephant
+    mapper = CLI_NAMES[method](V, F)
+    for source in (0, 1000, 2774):
+        local = mapper.compute(source, fraction=0.05)
+        assert_same_map(local, cli_map(tmp_path, path, method, source, "--fraction", "0.05"))
+
+
+def test_exact_method_as_the_command_line_program(tmp_path, cactus):
+    path, V, F = cactus
+    local = expmap.ExactExponentialMap(V, F).compute(7, vertices=40)
+    assert_same_map(local, cli_map(tmp_path, path, "exact", 7, "--vertices", "40"))
+
+
+def test_heat_options_reach_the_library(tmp_path, elephant):
+    path, V, F = elephant
+    heat = expmap.HeatExponentialMap(V, F, time_factor=3.0, laplacian="direct",
+                                     angle_estimator="log_heat_quadratic_fit")
+    local = heat.compute(500, radius=0.05)
+    reference = cli_map(tmp_path, path, "heat", 500, "--radius", "0.05", "--time-factor", "3",
+                        "--laplacian", "direct", "--angles", "quadratic-fit")
+    assert_same_map(local, reference)
+
+
+def test_read_mesh_keeps_file_order(elephant):
+    path, V, F = elephant
+    with open(path) as f:
+        lines = [line.split() for line in f if line.strip() and not line.startswith("#")]
+    assert lines[0] == ["OFF"]
+    n, m, _ = (int(x) for x in lines[1])
+    first = [float(x) for x in lines[2]]
+    assert V.shape == (n, 3) and V.dtype == np.float64
+    assert F.shape == (m, 3) and F.dtype == np.int64
+    np.testing.assert_array_equal(V[0], first)

@@ -1,0 +1,240 @@
+# Copyright (c) 2026 expmap contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""Batches equal single queries; options and enums; every kind of bad input
+is a ValueError (never a crash)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import expmap
+
+METHOD_CLASSES = [expmap.HeatExponentialMap, expmap.DiscreteExponentialMap,
+                  expmap.GeodesicPolarCoordinates]
+
+
+@pytest.fixture(scope="module")
+def heat(elephant):
+    _, V, F = elephant
+    return expmap.HeatExponentialMap(V, F)
+
+
+@pytest.mark.parametrize("method", METHOD_CLASSES)
+@pytest.mark.parametrize("threads", [1, 2, 0])
+def test_batch_equals_single_queries(elephant, method, threads):
+    _, V, F = elephant
+    mapper = method(V, F)
+    sources = np.array([5, 0, 2000, 5, 77], dtype=np.int32)
+    batch = mapper.compute_many(sources, vertices=60, threads=threads)
+    assert batch.failures == 0 and batch.errors == [""] * 5
+    np.testing.assert_array_equal(batch.sources, sources)
+    assert batch.offsets[0] == 0 and len(batch.offsets) == 6
+    for i, s in enumerate(sources):
+        rows = slice(batch.offsets[i], batch.offsets[i + 1])
+        local = mapper.compute(int(s), vertices=60)
+        np.testing.assert_array_equal(batch.vertex[rows], local.vertices)
+        np.testing.assert_array_equal(batch.r[rows], local.r)
+        np.testing.assert_array_equal(batch.theta[rows], local.theta)
+        np.testing.assert_array_equal(batch.u[rows], local.uv[:, 0])
+        np.testing.assert_array_equal(batch.v[rows], local.uv[:, 1])
+    assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v"}
+
+
+def test_local_map_arrays(heat):
+    local = heat.compute(np.int64(10), vertices=50)
+    assert local.source == 10 and len(local) == 50 and local.vertices[0] == 10
+    assert local.uv.shape == (50, 2) and local.r[0] == 0
+    assert np.all(np.diff(local.r) >= -1e-12)  # nearest first
+    np.testing.assert_allclose(local.uv[:, 0], local.r * np.cos(local.theta))
+    assert abs(np.linalg.norm(local.normal) - 1) < 1e-12
+    assert np.all(np.isfinite(local.theta)) and np.all(np.abs(local.theta) <= math.pi)
+
+
+def test_patch_kinds(heat):
+    assert len(heat.compute(3, vertex_set=[3, 4, 5, 6])) >= 1
+    local = heat.compute(3, radius=0.02)
+    assert np.all(local.r <= 0.02 + 1e-12)
+    assert len(heat.compute(3, fraction=0.01)) == math.ceil(0.01 * heat.number_of_vertices)
+
+
+def test_every_enum_member_is_accepted_by_name_and_value(cactus):
+    _, V, F = cactus
+    for enum, option in ((expmap.AngleEstimator, "angle_estimator"),
+                         (expmap.LaplacianMode, "laplacian"),
+                         (expmap.PoissonRegularization, "regularization")):
+        assert len(enum.__members__) >= 2
+        for name, value in enum.__members__.items():
+            by_name = expmap.HeatExponentialMap(V, F, **{option: name}).compute(0, vertices=30)
+            by_value = expmap.HeatExponentialMap(V, F, **{option: value}).compute(0, vertices=30)
+            np.testing.assert_array_equal(by_name.uv, by_value.uv)
+
+
+def test_failed_query_in_a_batch_keeps_the_others(elephant):
+    _, V, F = elephant
+    isolated = len(V)
+    V2 = np.vstack([V, [[0.0, 0.0, 0.0]]])
+    heat = expmap.HeatExponentialMap(V2, F)
+    batch = heat.compute_many([0, isolated, 1], vertices=20)
+    assert batch.failures == 1 and "isolated" in batch.errors[1]
+    assert batch.errors[0] == batch.errors[2] == ""
+    assert batch.offsets[2] - batch.offsets[1] == 0
+    assert batch.offsets[3] - batch.offsets[2] == 20
+    with pytest.raises(ValueError, match="isolated"):
+        heat.compute(isolated, vertices=20)
+
+
+def bad_meshes(V, F):
+    """(description, vertices, faces) a caller might pass by mistake."""
+    nan = V.copy()
+    nan[3, 1] = np.nan
+    inf = V.copy()
+    inf[0, 0] = np.inf
+    out_of_range = F.copy()
+    out_of_range[5, 2] = len(V)
+    negative = F.copy()
+    negative[0, 0] = -1
+    repeated = F.copy()
+    repeated[1, 1] = repeated[1, 0]
+    flipped = F.copy()
+    flipped[0] = flipped[0, ::-1]
+    return [
+        ("vertices n x 2", V[:, :2], F),
+        ("vertices 1-D", V.ravel(), F),
+        ("vertices 3-D", V[None], F),
+        ("faces m x 4", V, np.hstack([F, F[:, :1]])),
+        ("faces 1-D", V, F.ravel()),
+        ("integer vertices", V.astype(np.int64), F),
+        ("complex vertices", V.astype(complex), F),
+        ("string vertices", V.astype(str), F),
+        ("float faces", V, F.astype(float)),
+        ("bool faces", V, F.astype(bool)),
+        ("object faces", V, F.astype(object)),
+        ("NaN coordinate", nan, F),
+        ("infinite coordinate", inf, F),
+        ("face index out of range", V, out_of_range),
+        ("negative face index", V, negative),
+        ("huge unsigned face index", V, np.full_like(F, np.iinfo(np.uint64).max, dtype=np.uint64)),
+        ("repeated vertex in a face", V, repeated),
+        ("inconsistent orientation", V, flipped),
+        ("empty vertices", np.zeros((0, 3)), F),
+        ("empty faces", V, np.zeros((0, 3), dtype=np.int64)),
+        ("None", None, F),
+        ("a scalar", V, 3),
+        ("a nested list", [[1, 2], [3]], F),
+        ("all faces on one point", np.zeros_like(V), F),
+    ]
+
+
+@pytest.mark.parametrize("method", METHOD_CLASSES + [expmap.ExactExponentialMap])
+def test_bad_meshes_raise_value_error(cactus, method):
+    _, V, F = cactus
+    for description, vertices, faces in bad_meshes(V, F):
+        with pytest.raises(ValueError):
+            method(vertices, faces)
+            pytest.fail("accepted " + description)
+
+
+def test_bad_options_raise_value_error(cactus):
+    _, V, F = cactus
+    for options in ({"time_factor": 0.0}, {"time_factor": float("nan")}, {"time_factor": -1.0},
+                    {"distance_time_factor": float("inf")}, {"region_growth": 0.5},
+                    {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None}):
+        with pytest.raises(ValueError):
+            expmap.HeatExponentialMap(V, F, **options)
+
+
+@pytest.mark.parametrize("method", METHOD_CLASSES)
+def test_bad_queries_raise_value_error(cactus, method):
+    _, V, F = cactus
+    mapper = method(V, F)
+    n = len(V)
+    bad_queries = [
+        ((n,), {"vertices": 5}), ((-1,), {"vertices": 5}), ((2**70,), {"vertices": 5}),
+        ((1.5,), {"vertices": 5}), (("0",), {"vertices": 5}),
+        ((0,), {}), ((0,), {"radius": 0.1, "fraction": 0.1}),
+        ((0,), {"radius": 0.0}), ((0,), {"radius": float("nan")}), ((0,), {"radius": -1.0}),
+        ((0,), {"fraction": 0.0}), ((0,), {"fraction": 1.5}),
+        ((0,), {"vertices": 0}), ((0,), {"vertices": -3}),
+        ((0,), {"vertex_set": []}), ((0,), {"vertex_set": [n]}), ((0,), {"vertex_set": [-1]}),
+        ((0,), {"vertex_set": [[1, 2]]}), ((0,), {"vertex_set": [0.5]}),
+        ((0,), {"vertices": 5, "reference": [0, 0, 0]}),
+        ((0,), {"vertices": 5, "reference": [np.nan, 1, 0]}),
+        ((0,), {"vertices": 5, "reference": [1, 0]}), ((0,), {"vertices": 5, "reference": "x"}),
+    ]
+    for args, kwargs in bad_queries:
+        with pytest.raises(ValueError):
+            mapper.compute(*args, **kwargs)
+            pytest.fail("accepted compute%r %r" % (args, kwargs))
+    for sources, kwargs in [([], {"vertices": 5}), ([0, n], {"vertices": 5}),
+                            ([-1], {"vertices": 5}), ([[0, 1]], {"vertices": 5}),
+                            ([0.0], {"vertices": 5}), ([0], {"vertices": 5, "threads": -1}),
+                            ([0], {}), (None, {"vertices": 5})]:
+        with pytest.raises(ValueError):
+            mapper.compute_many(sources, **kwargs)
+            pytest.fail("accepted compute_many(%r, %r)" % (sources, kwargs))
+
+
+def test_read_mesh_errors_and_repairs(tmp_path):
+    with pytest.raises(OSError, match="cannot open"):
+        expmap.read_mesh(str(tmp_path / "missing.off"))
+    garbage = tmp_path / "garbage.off"
+    garbage.write_text("OFF\n3 1 0\n0 0 0\n1 0\n")
+    with pytest.raises(ValueError):
+        expmap.read_mesh(str(garbage))
+    quad = tmp_path / "quad.off"
+    quad.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n")
+    with pytest.raises(ValueError, match="not a triangle"):
+        expmap.read_mesh(str(quad), triangulate=False)
+    with pytest.warns(UserWarning, match="triangulated 1 faces"):
+        V, F, file_index = expmap.read_mesh(quad, return_file_index=True)  # any os.PathLike
+    assert V.shape == (4, 3) and F.shape == (2, 3)
+    np.testing.assert_array_equal(file_index, np.arange(4))
+
+
+def test_everything_is_documented():
+    for name in expmap.__all__:
+        obj = getattr(expmap, name)
+        if callable(obj):
+            assert obj.__doc__, name
+    for cls in (expmap.HeatExponentialMap, expmap.DiscreteExponentialMap,
+                expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap):
+        for member in ("__init__", "compute", "compute_many"):
+            assert getattr(cls, member).__doc__, (cls, member)
+
+
+@pytest.mark.filterwarnings("ignore:.*triangulated")  # hole.off has polygons
+def test_damaged_real_meshes_raise_or_give_finite_maps():
+    """Real meshes with faces removed, points merged, flattened or scaled to
+    extremes: every method either raises ValueError / RuntimeError or
+    returns finite maps (a crash would end the test run)."""
+    from conftest import mesh_path
+
+    rng = np.random.default_rng(12)
+    bases = [expmap.read_mesh(mesh_path(name))
+             for name in ("icosahedron.off", "octahedron.off", "fold.off", "star.off", "hole.off")]
+    classes = (expmap.HeatExponentialMap, expmap.DiscreteExponentialMap,
+               expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap)
+    for trial in range(40):
+        V, F = (a.copy() for a in bases[trial % len(bases)])
+        F = F[rng.random(len(F)) < 0.8] if trial % 3 == 0 else F
+        if len(F) == 0:
+            continue
+        if trial % 4 == 1:
+            V[rng.integers(len(V))] = V[rng.integers(len(V))]
+        if trial % 5 == 2:
+            V[:, 2] = 0
+        if trial % 7 == 3:
+            V *= 1e-200
+        for cls in classes:
+            try:
+                mapper = cls(V, F)
+            except (ValueError, RuntimeError):
+                continue
+            for source in range(len(V)):
+                for patch in ({"fraction": 1.0}, {"vertices": 3}, {"radius": 0.5}):
+                    try:
+                        local = mapper.compute(source, **patch)
+                    except (ValueError, RuntimeError):
+                        continue
+                    assert np.all(np.isfinite(local.r)) and np.all(np.isfinite(local.uv))
