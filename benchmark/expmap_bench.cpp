@@ -562,6 +562,37 @@ class Benchmark {
                    "component, which is what a non-localized solver computes anyway)\n";
       if (std::isfinite(worst)) std::cout << "  smallest speedup: " << fixed(worst, 1) << "x\n";
     }
+    // One row per mesh of heat's median over another method's (the paper's
+    // claim: below 1 from 5% patches on), and heat's p90 over its median
+    // (retries make the tail).
+    auto heat_table = [&](const std::string& title, auto value) {
+      header(title);
+      double worst = 0;
+      for (const auto& m : meshes) {
+        std::cout << pad(m, 18, true);
+        for (double f : fractions) {
+          const auto* a = find_row(m, "heat", f);
+          const double x = a ? value(*a, m, f) : nan_value;
+          if (!std::isnan(x)) worst = std::max(worst, x);
+          std::cout << pad(std::isnan(x) ? "-" : fixed(x, 2), 10);
+        }
+        std::cout << "\n";
+      }
+      if (worst > 0) std::cout << "  largest ratio: " << fixed(worst, 2) << "\n";
+    };
+    for (const char* baseline : {"dgpc", "dem"})
+      if (has("heat") && has(baseline))
+        heat_table(std::string("heat / ") + baseline +
+                       " query time (medians over the same sources; below 1: heat is faster):",
+                   [&](const Summary_row& heat, const std::string& m, double f) {
+                     const auto* b = find_row(m, baseline, f);
+                     return b && b->median_ms > 0 ? heat.median_ms / b->median_ms : nan_value;
+                   });
+    if (has("heat"))
+      heat_table("heat p90 / median query time:",
+                 [](const Summary_row& heat, const std::string&, double) {
+                   return heat.median_ms > 0 ? heat.p90_ms / heat.median_ms : nan_value;
+                 });
     if (has("heat")) {
       // One row per mesh of a per-row ratio of the heat method, with its largest value.
       auto ratio_table = [&](const std::string& title, double Summary_row::*ratio) {

@@ -243,7 +243,7 @@ void bind_heat(py::module_& m) {
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     std::optional<double> distance_time_factor, py::handle laplacian,
                     py::handle regularization, double region_growth,
-                    py::handle angle_estimator) {
+                    py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
           options.distance_time_factor = distance_time_factor;
@@ -253,6 +253,7 @@ void bind_heat(py::module_& m) {
           options.region_growth = region_growth;
           options.angle_estimator =
               enum_argument<expmap::Angle_estimator>(angle_estimator, "angle_estimator");
+          options.near_source_blend = {near_source_blend.first, near_source_blend.second};
           return bind_to_arrays<Method>(vertices, faces, [&](const Mesh& mesh) {
             return std::make_unique<const Method>(mesh, options);
           });
@@ -264,6 +265,8 @@ void bind_heat(py::module_& m) {
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
         py::arg("angle_estimator") = defaults.angle_estimator,
+        py::arg("near_source_blend") =
+            std::make_pair(defaults.near_source_blend.begin, defaults.near_source_blend.end),
         "Precomputes operators and factorizations of the mesh (vertices: float\n"
         "array n x 3; faces: integer array m x 3).\n\n"
         "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
@@ -274,7 +277,11 @@ void bind_heat(py::module_& m) {
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"
-        "angle_estimator: an AngleEstimator or its name.\n\n"
+        "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
+        "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
+        "near_source_blend: (begin, end) in mean edge lengths: chord directions up to\n"
+        "    begin from the source, heat directions from end on, blended between;\n"
+        "    (0, 0) for the paper's pure heat angles.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
@@ -318,7 +325,8 @@ PYBIND11_MODULE(_expmap, m) {
                                      "How the direction of the geodesic is read off the heat.")
       .value("heat_gradient", expmap::Angle_estimator::heat_gradient)
       .value("log_heat_gradient", expmap::Angle_estimator::log_heat_gradient)
-      .value("log_heat_quadratic_fit", expmap::Angle_estimator::log_heat_quadratic_fit);
+      .value("log_heat_quadratic_fit", expmap::Angle_estimator::log_heat_quadratic_fit)
+      .value("heat_quadratic_fit", expmap::Angle_estimator::heat_quadratic_fit);
 
   py::class_<Map_arrays>(m, "LocalMap",
                          "One local map: the patch vertices, nearest first, and their polar\n"

@@ -32,7 +32,7 @@ void check_against_full_solve(unsigned seed, bool pruned = false) {
   std::mt19937 rng(seed + 7);
   std::uniform_int_distribution<int> pick(0, n - 1);
   for (int trial = 0; trial < 5; ++trial) {
-    for (int width : {1, 3, 7, 9, 20}) {
+    for (int width : {1, 2, 3, 7, 9, 20}) {
       std::vector<expmap::internal::Rhs_entry> entries;
       Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, width);
       for (int c = 0; c < width; ++c)

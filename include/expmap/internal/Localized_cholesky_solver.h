@@ -265,6 +265,8 @@ class Localized_cholesky_solver {
                             std::size_t row_count, double* out, Workspace& ws,
                             Pruning pruning) const {
     if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning);
+    // Two columns: the star solve of an angle estimator linear in the heat.
+    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, pruning);
     if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, width);
     if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, width);
     if (width <= 12) return solve_block<12>(entries, rows, row_count, out, ws, pruning, width);
