@@ -5,6 +5,9 @@
 # (test/test_command/after_main_job.sh uses that to check the scripts).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# ccache keys on paths relative to the checkout, so a fresh clone elsewhere
+# (CI) reuses what an earlier build compiled.
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 build_dir="${EXPMAP_BUILD_DIR:-build}"
 cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release "$@"
 if [[ "${EXPMAP_CONFIGURE_ONLY:-0}" != 1 ]]; then
