@@ -594,27 +594,13 @@ class Benchmark {
                    return heat.median_ms > 0 ? heat.p90_ms / heat.median_ms : nan_value;
                  });
     if (has("heat")) {
-      // One row per mesh of a per-row ratio of the heat method, with its largest value.
-      auto ratio_table = [&](const std::string& title, double Summary_row::*ratio) {
-        header(title);
-        double worst = 0;
-        for (const auto& m : meshes) {
-          std::cout << pad(m, 18, true);
-          for (double f : fractions) {
-            const auto* a = find_row(m, "heat", f);
-            const double x = a ? a->*ratio : nan_value;
-            if (!std::isnan(x)) worst = std::max(worst, x);
-            std::cout << pad(fixed(x, 2), 10);
-          }
-          std::cout << "\n";
-        }
-        if (worst > 0) std::cout << "  largest ratio: " << fixed(worst, 2) << "\n";
-      };
-      ratio_table("heat query time / stream floor (median over sources; whole query time, so an "
-                  "upper bound on solve / floor):",
-                  &Summary_row::floor_ratio);
-      ratio_table("heat time inside the localized solves / stream floor (median over sources):",
-                  &Summary_row::solve_floor_ratio);
+      heat_table("heat query time / stream floor (median over sources; whole query time, so an "
+                 "upper bound on solve / floor):",
+                 [](const Summary_row& heat, const std::string&, double) { return heat.floor_ratio; });
+      heat_table("heat time inside the localized solves / stream floor (median over sources):",
+                 [](const Summary_row& heat, const std::string&, double) {
+                   return heat.solve_floor_ratio;
+                 });
     }
     // Per patch vertex cost of every method, and relative to the reference
     // mesh (armadillo if benchmarked, else the first).
