@@ -115,6 +115,12 @@ BOOST_AUTO_TEST_CASE(reference_parallel_to_normal) {
   query.reference_direction = std::array<double, 3>{{0, 0, 2}};
   check_message<expmap::Invalid_input>(
       [&] { heat.compute_by_index(60, expmap::Patch::fraction(0.5), query); }, "reference");
+  // The heat method renumbers its copy of the mesh; the message names the
+  // user's vertex, for every source.
+  for (std::size_t source : {0u, 17u, 60u, 120u})
+    check_message<expmap::Invalid_input>(
+        [&] { heat.compute_by_index(source, expmap::Patch::fraction(0.5), query); },
+        "at source vertex " + std::to_string(source));
 }
 
 BOOST_AUTO_TEST_CASE(isolated_vertex_is_ignored_but_cannot_be_a_source) {

@@ -52,7 +52,7 @@ inline Vector3 vertex_normal(const Mesh_arrays& m, int v) {
   }
   const double area_norm = norm(area);
   if (!(area_norm > 0))
-    throw Invalid_input("vertex " + std::to_string(v) +
+    throw Invalid_input("vertex " + std::to_string(m.to_original(v)) +
                         " has no well-defined normal (its incident faces cancel out)");
   const Vector3 area_normal = (1.0 / area_norm) * area;
   const double c = norm(curvature);
@@ -86,7 +86,7 @@ inline Tangent_frame tangent_frame(const Mesh_arrays& m, int source,
   const double p_norm = norm(projected);
   if (!(r_norm > 0) || !std::isfinite(r_norm) || !(p_norm > 1e-6 * r_norm))
     throw Invalid_input("the reference direction is zero, not finite, or parallel to the normal "
-                        "at source vertex " + std::to_string(source));
+                        "at source vertex " + std::to_string(m.to_original(source)));
   frame.e1 = (1.0 / p_norm) * projected;
   frame.e2 = cross(frame.normal, frame.e1);
   return frame;
