@@ -115,12 +115,12 @@ template <>
 std::string settings_description<Heat>(const Compute_arguments& a) {
   const expmap::Heat_options options = heat_options(a);
   std::ostringstream d;
-  d << "heat method (time factor " << options.time_factor << ", "
-    << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "intrinsic Delaunay")
-    << " Laplacian, "
-    << expmap::to_string(options.angle_estimator) << " angles, chord directions to "
-    << options.near_source_blend.begin << " h, blended by " << options.near_source_blend.end
-    << " h)";
+  // Short enough for the SVG caption's one line.
+  d << "heat (m = " << options.time_factor << ", "
+    << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT") << ", "
+    << expmap::to_string(options.angle_estimator) << " angles, chords to "
+    << options.near_source_blend.begin << "h, blended by " << options.near_source_blend.end
+    << "h)";
   return d.str();
 }
 
