@@ -17,8 +17,10 @@ namespace expmap {
 /// \ingroup PkgExpmapRef
 /// What `repair_degenerate_faces()` did.
 struct Degenerate_face_repair {
-  std::size_t faces_before = 0, faces_after = 0;
-  std::size_t vertices_before = 0, vertices_after = 0;
+  std::size_t faces_before = 0;     ///< faces of the mesh before the repair
+  std::size_t faces_after = 0;      ///< faces after it
+  std::size_t vertices_before = 0;  ///< vertices before the repair
+  std::size_t vertices_after = 0;   ///< vertices after it (collapsed ones are gone)
   bool complete = true;  ///< false if CGAL could not remove every degenerate face
 };
 

@@ -83,6 +83,7 @@ struct Heat_options {
   /// gave fewer fold-overs on real meshes (doc/folds.md); on Delaunay meshes
   /// both modes are the same.
   Laplacian_mode laplacian = Laplacian_mode::intrinsic_delaunay;
+  /// How the Poisson system of the distance step is made definite.
   Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
   /// A query solves on a region about this many times larger (in vertex
   /// count) than the patch; the Poisson step's cut-off error lives in the
@@ -165,8 +166,9 @@ class Heat_exponential_map
   double distance_time_step() const { return m_distance_time_step; }
   /// Mean edge length h of the input mesh.
   double mean_edge_length() const { return m_indexed.arrays.mean_edge_length; }
-  /// Elimination-tree heights of the heat and Poisson factors.
+  /// Elimination-tree height of the heat factor (columns on its longest path).
   int heat_tree_height() const { return m_heat_local.tree_height(); }
+  /// Elimination-tree height of the Poisson factor.
   int poisson_tree_height() const { return m_poisson_local.tree_height(); }
   /// Stored entries of all factors (heat, Poisson and, if separate, the
   /// distance heat), in the dense supernodal form the queries traverse.
@@ -175,6 +177,7 @@ class Heat_exponential_map
            (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
   using Front::number_of_vertices;
+  /// The settings the object was built with.
   const Heat_options& options() const { return m_options; }
   /// The estimator the queries use: `options().angle_estimator`, except
   /// that `heat_quadratic_fit` at a time factor below

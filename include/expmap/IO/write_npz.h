@@ -30,7 +30,7 @@ struct Npy_array {
   std::string name;                 ///< entry name in the archive, without `.npy`
   std::string descr;                ///< NumPy type, e.g. `<f8` (see `npy_descr()`)
   std::vector<std::size_t> shape;   ///< row-major (C order)
-  const unsigned char* data = nullptr;
+  const unsigned char* data = nullptr;  ///< `bytes` bytes of elements, owned by the caller
   std::size_t bytes = 0;            ///< product of `shape` times the element size
 };
 
