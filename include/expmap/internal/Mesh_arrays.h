@@ -5,6 +5,7 @@
 
 #include <expmap/Errors.h>
 #include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/Vector3.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -93,21 +94,11 @@ inline void compute_adjacency(Mesh_arrays& m) {
       m.vertex_face_start, m.vertex_face);
 
   // Neighbours: the other two corners of every incident face, deduplicated.
-  m.neighbor_start.assign(n + 1, 0);
-  m.neighbor.clear();
-  m.neighbor.reserve(3 * m.face.size());
-  std::vector<int> candidates;
-  for (std::size_t v = 0; v < n; ++v) {
-    candidates.clear();
-    for (int p = m.vertex_face_start[v]; p < m.vertex_face_start[v + 1]; ++p)
-      for (int w : m.face[m.vertex_face[p]])
-        if (w != static_cast<int>(v)) candidates.push_back(w);
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    m.neighbor.insert(m.neighbor.end(), candidates.begin(), candidates.end());
-    m.max_degree = std::max(m.max_degree, static_cast<int>(candidates.size()));
-    m.neighbor_start[v + 1] = static_cast<int>(m.neighbor.size());
-  }
+  Vertex_adjacency adjacency = vertex_adjacency(n, m.face);
+  m.neighbor_start = std::move(adjacency.start);
+  m.neighbor = std::move(adjacency.neighbor);
+  for (std::size_t v = 0; v < n; ++v)
+    m.max_degree = std::max(m.max_degree, m.neighbor_start[v + 1] - m.neighbor_start[v]);
 
   double total = 0;
   std::size_t edges = 0;

@@ -6,6 +6,7 @@
 #include <expmap/internal/Intrinsic_triangulation.h>
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 namespace expmap {
@@ -21,15 +22,16 @@ struct Vertex_adjacency {
   const int* end(int v) const { return neighbor.data() + start[v + 1]; }
 };
 
-inline Vertex_adjacency vertex_adjacency(const Intrinsic_triangulation& tri) {
-  const std::size_t n = tri.number_of_vertices;
+/// The neighbours of `n` vertices in the triangles `faces`.
+inline Vertex_adjacency vertex_adjacency(std::size_t n,
+                                         const std::vector<std::array<int, 3>>& faces) {
   std::vector<int> count(n + 1, 0);
-  for (const auto& f : tri.face)
+  for (const auto& f : faces)
     for (int v : f) count[static_cast<std::size_t>(v) + 1] += 2;
   for (std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];
   std::vector<int> all(static_cast<std::size_t>(count[n]));
   std::vector<int> fill(count.begin(), count.end() - 1);
-  for (const auto& f : tri.face)
+  for (const auto& f : faces)
     for (int k = 0; k < 3; ++k) {
       all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 1) % 3];
       all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 2) % 3];
@@ -43,6 +45,10 @@ inline Vertex_adjacency vertex_adjacency(const Intrinsic_triangulation& tri) {
     a.start[v + 1] = static_cast<int>(a.neighbor.size());
   }
   return a;
+}
+
+inline Vertex_adjacency vertex_adjacency(const Intrinsic_triangulation& tri) {
+  return vertex_adjacency(tri.number_of_vertices, tri.face);
 }
 
 /// s, then its neighbours, then (if `rings` is 2) their other neighbours:
