@@ -675,6 +675,14 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
                                                      const internal::Star_gradient& star,
                                                      const double* h,
                                                      std::vector<double>& values) const {
+  const double h_mean = m_indexed.arrays.mean_edge_length;
+  const double begin = m_options.near_source_blend.begin * h_mean;
+  const double end = m_options.near_source_blend.end * h_mean;
+  const bool near = r < end;
+  auto chord_angle = [&] {
+    return frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
+  };
+  if (near && r <= begin) return chord_angle();  // the heat's direction is not used
   // Step 3 of the paper: the direction of the geodesic to v is the gradient
   // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
   std::array<double, 2> g;
@@ -682,7 +690,7 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
     g = {{h[0], h[1]}};  // the solve applied the gradient weights already
     if (m_angle_estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
       g = internal::remove_cubic_leak(star, {{g[0] / at_source, g[1] / at_source}},
-                                      std::max(r, m_indexed.arrays.mean_edge_length), m_time_step);
+                                      std::max(r, h_mean), m_time_step);
   } else {
     const std::size_t width = star.vertices.size();
     const bool use_log = std::all_of(h, h + width, [](double x) { return x > 0; });
@@ -690,18 +698,13 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
     g = star.apply(values.data());
   }
   const double heat_angle = std::atan2(g[1], g[0]);
-  const double h_mean = m_indexed.arrays.mean_edge_length;
-  const double begin = m_options.near_source_blend.begin * h_mean;
-  const double end = m_options.near_source_blend.end * h_mean;
-  if (!(r < end)) return heat_angle;
-  const double chord_angle =
-      frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
-  if (r <= begin) return chord_angle;
+  if (!near) return heat_angle;
+  const double chord = chord_angle();
   // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
   const double x = (r - begin) / (end - begin);
   const double w = x * x * (3 - 2 * x);
-  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(chord_angle),
-                    w * std::cos(heat_angle) + (1 - w) * std::cos(chord_angle));
+  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(chord),
+                    w * std::cos(heat_angle) + (1 - w) * std::cos(chord));
 }
 
 /// \ingroup PkgExpmapRef
