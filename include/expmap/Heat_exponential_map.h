@@ -132,6 +132,9 @@ class Heat_exponential_map
   /// \throws Invalid_input for meshes that cannot be used (empty, not
   ///         triangulated, degenerate faces, non-finite coordinates) or a
   ///         non-positive time factor.
+  /// \throws Computation_error if the solver model cannot factor one of the
+  ///         systems (numerically indefinite on nearly degenerate faces);
+  ///         the message names the system and carries the model's own.
   explicit Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options = {})
       : Heat_exponential_map(tm, options, get(CGAL::vertex_point, tm)) {}
 
@@ -268,9 +271,10 @@ class Heat_exponential_map
       internal::make_identity_row(heat, isolated);
       return heat;
     };
-    m_heat_local = factor_locally(heat_matrix(m_time_step));
+    m_heat_local = factor_locally(heat_matrix(m_time_step), "heat");
     if (m_separate_distance_heat)
-      m_distance_heat_local = factor_locally(heat_matrix(m_distance_time_step), &m_heat_local);
+      m_distance_heat_local =
+          factor_locally(heat_matrix(m_distance_time_step), "distance heat", &m_heat_local);
 
     // Identity rows need a zero right-hand side: isolated vertices get no
     // divergence anyway, and a pinned vertex's potential must stay 0.
@@ -288,7 +292,7 @@ class Heat_exponential_map
       }
     }
     internal::make_identity_row(L, identity_rows);
-    m_poisson_local = factor_locally(L, &m_heat_local);
+    m_poisson_local = factor_locally(L, "Poisson", &m_heat_local);
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the
@@ -312,13 +316,25 @@ class Heat_exponential_map
                                    const std::vector<int>&, long) {
     solver.factor(A);
   }
+  //
+  // A solver model reports failure in its own way (CHOLMOD's status, Eigen's
+  // info); the user sees one Computation_error naming the system.
   static internal::Localized_cholesky_solver factor_locally(
-      const internal::Sparse_matrix& A, const internal::Localized_cholesky_solver* like = nullptr) {
+      const internal::Sparse_matrix& A, const char* system,
+      const internal::Localized_cholesky_solver* like = nullptr) {
     Solver solver;
-    if (like)
-      factor_with_ordering(solver, A, like->permutation(), 0);
-    else
-      solver.factor(A);
+    try {
+      if (like)
+        factor_with_ordering(solver, A, like->permutation(), 0);
+      else
+        solver.factor(A);
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::exception& e) {
+      throw Computation_error(std::string("the ") + system + " matrix could not be factored (" +
+                              e.what() + "); nearly degenerate faces make it numerically "
+                              "indefinite: repair the mesh (expmap --repair) or remesh it");
+    }
     return internal::Localized_cholesky_solver(solver.factor_view());
   }
 

@@ -1,5 +1,6 @@
 // The same map whatever the mesh data structure or the solver model: the
 // package is generic over CGAL FaceGraphs and SparseCholeskySolver models.
+#include <expmap/Analytic_surfaces.h>
 #include <expmap/Eigen_simplicial_solver.h>
 #include <expmap/Heat_exponential_map.h>
 
@@ -27,9 +28,37 @@ void check_identical(const MapA& a, const MapB& b, double tolerance) {
   BOOST_TEST(worst_theta <= tolerance);
 }
 
+// A solver model that factors the first matrix it is given (the heat
+// system) with Eigen and fails on the next one (the Poisson system), as a
+// model reports a numerically indefinite matrix: with an exception of its own.
+struct Solver_failing_after_first_factor : expmap::Eigen_simplicial_solver {
+  static inline int factored = 0;
+  void factor(const Matrix& A) {
+    if (factored++ > 0) throw std::runtime_error("model: the matrix is not positive definite");
+    expmap::Eigen_simplicial_solver::factor(A);
+  }
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(generic_interfaces)
+
+BOOST_AUTO_TEST_CASE(a_solver_models_failure_is_a_computation_error_naming_the_system) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(expmap::make_icosphere(2, 1.0), mesh);
+  Solver_failing_after_first_factor::factored = 0;
+  try {
+    expmap::Heat_exponential_map<Surface_mesh, CGAL::Default, Solver_failing_after_first_factor>
+        heat(mesh);
+    BOOST_FAIL("the failing factorization was not reported");
+  } catch (const expmap::Computation_error& e) {
+    const std::string what = e.what();
+    BOOST_TEST_MESSAGE(what);
+    BOOST_TEST(what.find("Poisson matrix could not be factored") != std::string::npos);
+    BOOST_TEST(what.find("not positive definite") != std::string::npos);
+  }
+  BOOST_TEST(Solver_failing_after_first_factor::factored == 2);
+}
 
 BOOST_AUTO_TEST_CASE(surface_mesh_and_polyhedron_give_identical_maps) {
   const Surface_mesh sm = load_mesh<Surface_mesh>("armadillo.off");
