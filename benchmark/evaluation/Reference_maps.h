@@ -75,13 +75,16 @@ struct Errors {
   // The same over the points with r_exact <= inner_radius (the inner half of
   // the patch in the accuracy study), same rotation.
   double distance_inner = std::nan(""), angle_inner = std::nan("");
+  // The largest angle error over the points with r_exact <= near_radius
+  // (about two rings of the source), where a heat kernel is least resolved.
+  double angle_max_near = std::nan("");
 };
 
 /// Errors of `map` at the reference points; the constant rotation between
 /// computed and exact angles (their circular mean difference) is removed,
 /// as the maps may use different reference directions.
 inline Errors map_errors(const Map& map, std::size_t n, const std::vector<Reference_point>& points,
-                         double inner_radius = 0) {
+                         double inner_radius = 0, double near_radius = 0) {
   const std::vector<int> pos = positions(map, n);
   std::vector<double> dr, computed, exact, radius;
   Errors e;
@@ -111,6 +114,8 @@ inline Errors map_errors(const Map& map, std::size_t n, const std::vector<Refere
     }
   e.distance_inner = mean(dr_inner);
   e.angle_inner = mean(da_inner);
+  for (std::size_t i = 0; i < dr.size(); ++i)
+    if (radius[i] <= near_radius && !(da[i] <= e.angle_max_near)) e.angle_max_near = da[i];
   return e;
 }
 
@@ -126,6 +131,7 @@ class Error_average {
     m_angle_max.push_back(e.angle_max);
     m_distance_inner.push_back(e.distance_inner);
     m_angle_inner.push_back(e.angle_inner);
+    if (!std::isnan(e.angle_max_near)) m_angle_max_near.push_back(e.angle_max_near);
     m_points += e.points;
     m_missing += e.missing;
   }
@@ -140,6 +146,7 @@ class Error_average {
     e.missing = m_missing;
     e.distance_inner = mean(m_distance_inner);
     e.angle_inner = mean(m_angle_inner);
+    e.angle_max_near = largest(m_angle_max_near);
     return e;
   }
 
@@ -147,7 +154,8 @@ class Error_average {
   static double largest(const std::vector<double>& v) {
     return v.empty() ? std::nan("") : *std::max_element(v.begin(), v.end());
   }
-  std::vector<double> m_distance, m_angle, m_distance_max, m_angle_max, m_distance_inner, m_angle_inner;
+  std::vector<double> m_distance, m_angle, m_distance_max, m_angle_max, m_distance_inner, m_angle_inner,
+      m_angle_max_near;
   std::size_t m_points = 0, m_missing = 0;
 };
 
