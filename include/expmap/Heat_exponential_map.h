@@ -25,6 +25,7 @@
 #include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
+#include <expmap/internal/Source_one_ring.h>
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Triangulation_adjacency.h>
@@ -384,11 +385,22 @@ class Heat_exponential_map
   }
   // Direction of the geodesic from s to patch vertex v at heat distance r,
   // from the star solve's row `h` (see solve_star_heat), blended with the
-  // chord's direction next to the source (Near_source_blend).
-  // `at_source` is the heat from v at s (for `heat_quadratic_fit`).
+  // geometric direction next to the source (Near_source_blend, see
+  // near_source_angle). `at_source` is the heat from v at s (for
+  // `heat_quadratic_fit`).
   double polar_angle(int s, int v, double r, double at_source,
                      const internal::Tangent_frame& frame, const internal::Star_gradient& star,
-                     const double* h, std::vector<double>& values) const;
+                     const internal::Source_one_ring& ring, const double* h,
+                     std::vector<double>& values) const;
+  // The geometric direction of v next to the source: a neighbour's edge at
+  // its intrinsic angle (the corner angles at s summed and rescaled to
+  // 2 pi, as DGPC starts), any other vertex's chord projected onto the
+  // tangent plane and carried into the same intrinsic angles by the wedge
+  // of neighbours it projects into. A projection alone shrinks or widens
+  // the corners of a curved one-ring unevenly (on a saddle by up to 0.05
+  // rad at two rings) and can take them out of their cyclic order.
+  double near_source_angle(int s, int v, const internal::Tangent_frame& frame,
+                           const internal::Source_one_ring& ring) const;
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
@@ -660,6 +672,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
   std::vector<internal::Polar_entry> entries;
   entries.reserve(order.size());
   std::vector<double> values(star.vertices.size());
+  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, frame);
   for (std::size_t p = 0; p < order.size(); ++p) {
     const std::size_t i = order[p];
     const int v = ws.region[i];
@@ -677,7 +690,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                               "); increase the time factor or request a smaller patch");
     if (v == s) continue;
     entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)), ws.potential[i],
-                       polar_angle(s, v, ws.potential[i], at_source, frame, star, h, values)});
+                       polar_angle(s, v, ws.potential[i], at_source, frame, star, ring, h, values)});
   }
   Solve_statistics statistics = result.statistics;
   result = internal::assemble_local_map(static_cast<int>(m_indexed.arrays.to_original(s)), entries,
@@ -689,15 +702,14 @@ template <class TM, class VPM, class S>
 double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, double at_source,
                                                      const internal::Tangent_frame& frame,
                                                      const internal::Star_gradient& star,
+                                                     const internal::Source_one_ring& ring,
                                                      const double* h,
                                                      std::vector<double>& values) const {
   const double h_mean = m_indexed.arrays.mean_edge_length;
   const double begin = m_options.near_source_blend.begin * h_mean;
   const double end = m_options.near_source_blend.end * h_mean;
   const bool near = r < end;
-  auto chord_angle = [&] {
-    return frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
-  };
+  auto chord_angle = [&] { return near_source_angle(s, v, frame, ring); };
   if (near && r <= begin) return chord_angle();  // the heat's direction is not used
   // Step 3 of the paper: the direction of the geodesic to v is the gradient
   // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
@@ -721,6 +733,17 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
   const double w = x * x * (3 - 2 * x);
   return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(chord),
                     w * std::cos(heat_angle) + (1 - w) * std::cos(chord));
+}
+
+template <class TM, class VPM, class S>
+double Heat_exponential_map<TM, VPM, S>::near_source_angle(
+    int s, int v, const internal::Tangent_frame& frame,
+    const internal::Source_one_ring& ring) const {
+  for (std::size_t k = 0; k < ring.vertex.size(); ++k)
+    if (ring.vertex[k] == v) return ring.angle[k] - ring.reference_angle;
+  const double projected =
+      frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
+  return ring.native_angle(projected) - ring.reference_angle;
 }
 
 /// \ingroup PkgExpmapRef

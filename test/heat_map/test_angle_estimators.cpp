@@ -6,6 +6,7 @@
 // vertex: checked against whole-mesh solves of every star column. The
 // near-source blend keeps the largest error next to the source small.
 #include <expmap/Analytic_surfaces.h>
+#include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Star_gradient.h>
@@ -20,6 +21,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "test_support.h"
@@ -273,6 +275,40 @@ BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
   // Measured 2.32e-3 here (1.82e-2 for the previous default).
   BOOST_TEST(defaults.mean < 3e-3);
   BOOST_TEST(defaults.mean < 0.7 * before.mean);
+}
+
+// Next to the source the default takes geometric directions; a neighbour
+// of the source gets its edge's intrinsic angle, the one DGPC starts from
+// (corner angles summed and rescaled to 2 pi), on a curved one-ring where a
+// projection onto the tangent plane distorts the corners.
+BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_intrinsic_angles) {
+  const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
+  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  expmap::Geodesic_polar_coordinates<Surface_mesh> dgpc(mesh);
+  double largest = 0;
+  int compared = 0;
+  for (std::size_t source : {17u, 4000u, 12345u, 20000u}) {
+    const auto a = heat.compute_by_index(source, expmap::Patch::fraction(0.01));
+    const auto b = dgpc.compute_by_index(source, expmap::Patch::fraction(0.01));
+    std::map<std::size_t, double> dgpc_angle;
+    for (std::size_t i = 0; i < b.size(); ++i) dgpc_angle[b.indices[i]] = b.angle[i];
+    const auto s = *std::next(vertices(mesh).begin(), static_cast<std::ptrdiff_t>(source));
+    for (auto v : vertices_around_target(halfedge(s, mesh), mesh)) {
+      const std::size_t index = static_cast<std::size_t>(v);
+      const auto it = std::find(a.indices.begin(), a.indices.end(), index);
+      BOOST_TEST_REQUIRE((it != a.indices.end()));
+      const std::size_t i = static_cast<std::size_t>(it - a.indices.begin());
+      // Beyond the blend's start (long edges) the heat's direction enters.
+      if (a.distance[i] > heat.options().near_source_blend.begin * heat.mean_edge_length()) continue;
+      ++compared;
+      const double heat_angle = a.angle[i];
+      largest = std::max(largest, std::abs(wrap_angle(heat_angle - dgpc_angle.at(index))));
+    }
+  }
+  BOOST_TEST_MESSAGE("largest difference to DGPC's angle on " << compared
+                     << " neighbours of the sources: " << largest);
+  BOOST_TEST(compared >= 16);
+  BOOST_TEST(largest < 1e-12);
 }
 
 // Below time factor 4 the default takes the logarithmic fit (the heat

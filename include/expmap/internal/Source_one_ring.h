@@ -30,6 +30,22 @@ struct Source_one_ring {
   /// The native angle of the tangent frame's first axis e1: native angles
   /// minus this value are angles in the frame of `tangent_frame()`.
   double reference_angle = 0;
+  /// Each neighbour's direction projected onto the tangent plane, as an
+  /// angle in the frame.
+  std::vector<double> projected;
+  /// The corner angle at the source after each neighbour (0 after the end
+  /// of an open chain).
+  std::vector<double> wedge_angle;
+
+  /// The native angle of a direction whose projection onto the tangent
+  /// plane has angle `projected_angle` in the frame: the wedge (pair of
+  /// consecutive neighbours) whose projection contains it is found, and the
+  /// angle is interpolated linearly into the wedge's native angles. On a
+  /// plane native and projected angles agree, so the conversion is exact
+  /// there. Beyond the last neighbour of a boundary source the projected
+  /// angle is extrapolated from it; where every wedge around the direction
+  /// folds over in projection, the nearest neighbour's offset is used.
+  double native_angle(double projected_angle) const;
 };
 
 namespace one_ring_detail {
@@ -125,35 +141,36 @@ inline Source_one_ring source_one_ring(const Mesh_arrays& m, int s, const Tangen
   const double scale = ring.closed && total > 0 ? 2 * M_PI / total : 1.0;
   for (double& a : ring.angle) a *= scale;
 
-  // Native angle of e1 (projected angle 0).
-  std::vector<double> projected(n);
+  ring.projected.resize(n);
   for (std::size_t i = 0; i < n; ++i)
-    projected[i] = frame.angle_of(m.point[ring.vertex[i]] - m.point[s]);
-  const std::size_t wedge_count = ring.closed ? n : n - 1;
+    ring.projected[i] = frame.angle_of(m.point[ring.vertex[i]] - m.point[s]);
+  ring.wedge_angle = std::move(wedge_angle);
+  ring.reference_angle = ring.native_angle(0.0);  // e1's projected angle is 0
+  return ring;
+}
+
+inline double Source_one_ring::native_angle(double projected_angle) const {
+  using one_ring_detail::ccw;
+  const std::size_t n = vertex.size();
+  const std::size_t wedge_count = closed ? n : n - 1;
   for (std::size_t i = 0; i < wedge_count; ++i) {
     const std::size_t next = (i + 1) % n;
     if (wedge_angle[i] == 0) continue;  // between chains
     const double span = ccw(projected[i], projected[next]);
-    const double offset = ccw(projected[i], 0.0);
+    const double offset = ccw(projected[i], projected_angle);
     // A corner angle is below pi and projects to below pi unless the wedge
-    // folds over in projection; such wedges cannot locate e1.
+    // folds over in projection; such wedges cannot locate a direction.
     if (!(span > 0 && span < M_PI) || offset > span) continue;
-    const double end = next == 0 ? 2 * M_PI : ring.angle[next];
-    ring.reference_angle = ring.angle[i] + (offset / span) * (end - ring.angle[i]);
-    return ring;
+    const double end = next == 0 ? 2 * M_PI : angle[next];
+    return angle[i] + (offset / span) * (end - angle[i]);
   }
-  if (!ring.closed) {
-    ring.reference_angle = ring.angle[n - 1] + ccw(projected[n - 1], 0.0);
-    return ring;
-  }
-  // Folded projections everywhere near e1: use the nearest neighbour.
+  if (!closed) return angle[n - 1] + ccw(projected[n - 1], projected_angle);
   std::size_t nearest = 0;
   for (std::size_t i = 1; i < n; ++i)
-    if (std::abs(std::remainder(projected[i], 2 * M_PI)) <
-        std::abs(std::remainder(projected[nearest], 2 * M_PI)))
+    if (std::abs(std::remainder(projected[i] - projected_angle, 2 * M_PI)) <
+        std::abs(std::remainder(projected[nearest] - projected_angle, 2 * M_PI)))
       nearest = i;
-  ring.reference_angle = ring.angle[nearest] - projected[nearest];
-  return ring;
+  return angle[nearest] - std::remainder(projected[nearest] - projected_angle, 2 * M_PI);
 }
 
 }  // namespace internal
