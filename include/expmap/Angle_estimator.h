@@ -68,6 +68,11 @@ inline bool is_linear_in_heat(Angle_estimator estimator) {
 /// to `begin` mean edge lengths take the chord's direction; from `begin` to
 /// `end` it turns smoothly (a cubic smoothstep in the distance) into the
 /// heat's direction. `end = 0` gives the paper's pure heat angles.
+/// The chord's direction is read in the source's intrinsic angles: a
+/// neighbour of the source takes its edge's angle as DGPC does (corner
+/// angles summed and rescaled to 2 pi), any other vertex its projected
+/// chord carried into those angles by the wedge of neighbours it projects
+/// into.
 struct Near_source_blend {
   double begin = 2.0;  ///< in mean edge lengths h; at least 0
   double end = 6.0;    ///< in mean edge lengths h; at least `begin`
