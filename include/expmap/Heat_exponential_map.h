@@ -317,7 +317,6 @@ class Heat_exponential_map
                                    const std::vector<int>&, long) {
     solver.factor(A);
   }
-  //
   // A solver model reports failure in its own way (CHOLMOD's status, Eigen's
   // info); the user sees one Computation_error naming the system.
   static internal::Localized_cholesky_solver factor_locally(
@@ -397,8 +396,8 @@ class Heat_exponential_map
   // 2 pi, as DGPC starts), any other vertex's chord projected onto the
   // tangent plane and carried into the same intrinsic angles by the wedge
   // of neighbours it projects into. A projection alone shrinks or widens
-  // the corners of a curved one-ring unevenly (on a saddle by up to 0.05
-  // rad at two rings) and can take them out of their cyclic order.
+  // the corners of a curved one-ring unevenly and can take them out of
+  // their cyclic order.
   double near_source_angle(int s, int v, const internal::Tangent_frame& frame,
                            const internal::Source_one_ring& ring) const;
   // Smallest distance on the region's boundary (infinity if it has none).
@@ -709,8 +708,7 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
   const double begin = m_options.near_source_blend.begin * h_mean;
   const double end = m_options.near_source_blend.end * h_mean;
   const bool near = r < end;
-  auto chord_angle = [&] { return near_source_angle(s, v, frame, ring); };
-  if (near && r <= begin) return chord_angle();  // the heat's direction is not used
+  if (near && r <= begin) return near_source_angle(s, v, frame, ring);  // no heat direction needed
   // Step 3 of the paper: the direction of the geodesic to v is the gradient
   // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
   std::array<double, 2> g;
@@ -727,12 +725,12 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
   }
   const double heat_angle = std::atan2(g[1], g[0]);
   if (!near) return heat_angle;
-  const double chord = chord_angle();
+  const double geometric = near_source_angle(s, v, frame, ring);
   // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
   const double x = (r - begin) / (end - begin);
   const double w = x * x * (3 - 2 * x);
-  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(chord),
-                    w * std::cos(heat_angle) + (1 - w) * std::cos(chord));
+  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(geometric),
+                    w * std::cos(heat_angle) + (1 - w) * std::cos(geometric));
 }
 
 template <class TM, class VPM, class S>
