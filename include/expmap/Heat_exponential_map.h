@@ -400,6 +400,32 @@ class Heat_exponential_map
   // their cyclic order.
   double near_source_angle(int s, int v, const internal::Tangent_frame& frame,
                            const internal::Source_one_ring& ring) const;
+  // The weight of the heat's coordinates at heat distance r: 0 up to the
+  // blend's begin, a cubic smoothstep to 1 at its end (Near_source_blend).
+  double heat_weight(double r) const {
+    const double h_mean = m_indexed.arrays.mean_edge_length;
+    const double begin = m_options.near_source_blend.begin * h_mean;
+    const double end = m_options.near_source_blend.end * h_mean;
+    if (r >= end) return 1.0;
+    if (r <= begin) return 0.0;
+    const double x = (r - begin) / (end - begin);
+    return x * x * (3 - 2 * x);
+  }
+  // The distance of v at heat distance r. A neighbour of the source takes
+  // its edge's length (the exact polyhedral distance, where DGPC starts),
+  // blended into r like the angle: the heat distance is off by about 0.1 h
+  // anywhere, a tenth of a neighbour's distance, and a patch's texture is
+  // interpolated from these corners right next to the source. Farther
+  // vertices keep r: chord lengths there cut through space on coarse curved
+  // meshes and fold triangles over (doc/results.md, section 0).
+  double blended_distance(int s, int v, double r, const internal::Source_one_ring& ring) const {
+    const double w = heat_weight(r);
+    if (w == 1.0 || std::find(ring.vertex.begin(), ring.vertex.end(), v) == ring.vertex.end())
+      return r;
+    const double edge =
+        internal::norm(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
+    return w * r + (1 - w) * edge;
+  }
   // Smallest distance on the region's boundary (infinity if it has none).
   double boundary_distance(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
@@ -688,7 +714,8 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
     if (v == s) continue;
-    entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)), ws.potential[i],
+    entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)),
+                       blended_distance(s, v, ws.potential[i], ring),
                        polar_angle(s, v, ws.potential[i], at_source, frame, star, ring, h, values)});
   }
   Solve_statistics statistics = result.statistics;
@@ -705,10 +732,8 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
                                                      const double* h,
                                                      std::vector<double>& values) const {
   const double h_mean = m_indexed.arrays.mean_edge_length;
-  const double begin = m_options.near_source_blend.begin * h_mean;
-  const double end = m_options.near_source_blend.end * h_mean;
-  const bool near = r < end;
-  if (near && r <= begin) return near_source_angle(s, v, frame, ring);  // no heat direction needed
+  const double w = heat_weight(r);
+  if (w == 0.0) return near_source_angle(s, v, frame, ring);  // no heat direction needed
   // Step 3 of the paper: the direction of the geodesic to v is the gradient
   // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
   std::array<double, 2> g;
@@ -724,11 +749,9 @@ double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, dou
     g = star.apply(values.data());
   }
   const double heat_angle = std::atan2(g[1], g[0]);
-  if (!near) return heat_angle;
+  if (w == 1.0) return heat_angle;
   const double geometric = near_source_angle(s, v, frame, ring);
   // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
-  const double x = (r - begin) / (end - begin);
-  const double w = x * x * (3 - 2 * x);
   return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(geometric),
                     w * std::cos(heat_angle) + (1 - w) * std::cos(geometric));
 }

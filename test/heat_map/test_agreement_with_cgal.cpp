@@ -27,6 +27,9 @@ Comparison compare_with_cgal(Surface_mesh& mesh, std::size_t source,
   options.distance_time_factor = 1.0;  // CGAL's t = h^2
   options.regularization = regularization;
   options.laplacian = expmap::Laplacian_mode::direct;  // CGAL's Direct mode
+  // The heat distance itself: without the source's neighbours at their edge
+  // lengths (Near_source_blend), which CGAL does not do.
+  options.near_source_blend = {0, 0};
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
   const auto map = heat.compute_by_index(source, expmap::Patch::fraction(1.0));
 

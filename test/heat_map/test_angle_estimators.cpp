@@ -277,15 +277,16 @@ BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
   BOOST_TEST(defaults.mean < 0.7 * before.mean);
 }
 
-// Next to the source the default takes geometric directions; a neighbour
+// Next to the source the default takes geometric coordinates: a neighbour
 // of the source gets its edge's intrinsic angle, the one DGPC starts from
 // (corner angles summed and rescaled to 2 pi), on a curved one-ring where a
-// projection onto the tangent plane distorts the corners.
-BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_intrinsic_angles) {
+// projection onto the tangent plane distorts the corners, and its edge's
+// length as its distance.
+BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_angles_and_their_edge_lengths) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   expmap::Geodesic_polar_coordinates<Surface_mesh> dgpc(mesh);
-  double largest = 0;
+  double largest = 0, largest_length = 0;
   int compared = 0;
   for (std::size_t source : {17u, 4000u, 12345u, 20000u}) {
     const auto a = heat.compute_by_index(source, expmap::Patch::fraction(0.01));
@@ -303,12 +304,16 @@ BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_intrinsic_angles) {
       ++compared;
       const double heat_angle = a.angle[i];
       largest = std::max(largest, std::abs(wrap_angle(heat_angle - dgpc_angle.at(index))));
+      const double edge = std::sqrt(CGAL::squared_distance(mesh.point(s), mesh.point(v)));
+      largest_length = std::max(largest_length, std::abs(a.distance[i] - edge) / edge);
     }
   }
   BOOST_TEST_MESSAGE("largest difference to DGPC's angle on " << compared
                      << " neighbours of the sources: " << largest);
+  BOOST_TEST_MESSAGE("largest relative difference to the edge's length: " << largest_length);
   BOOST_TEST(compared >= 16);
   BOOST_TEST(largest < 1e-12);
+  BOOST_TEST(largest_length < 1e-12);
 }
 
 // Below time factor 4 the default takes the logarithmic fit (the heat
