@@ -72,7 +72,10 @@ inline bool is_linear_in_heat(Angle_estimator estimator) {
 /// neighbour of the source takes its edge's angle as DGPC does (corner
 /// angles summed and rescaled to 2 pi), any other vertex its projected
 /// chord carried into those angles by the wedge of neighbours it projects
-/// into.
+/// into. A neighbour's distance is likewise its edge's length up to
+/// `begin`, blended into the heat distance by `end`; so with a geodesic
+/// radius below about 2h a neighbour's reported distance can exceed the
+/// radius its heat distance was selected by.
 struct Near_source_blend {
   double begin = 2.0;  ///< in mean edge lengths h; at least 0
   double end = 6.0;    ///< in mean edge lengths h; at least `begin`

@@ -279,9 +279,10 @@ void bind_heat(py::module_& m) {
         "    patch (at least 1).\n"
         "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
         "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
-        "near_source_blend: (begin, end) in mean edge lengths: chord directions up to\n"
-        "    begin from the source, heat directions from end on, blended between;\n"
-        "    (0, 0) for the paper's pure heat angles.\n\n"
+        "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"
+        "    the source's neighbours' edge lengths) up to begin from the source, heat\n"
+        "    coordinates from end on, blended between; (0, 0) for the paper's pure\n"
+        "    heat coordinates.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
