@@ -492,29 +492,23 @@ void run_accuracy(const Settings& settings) {
      << " h of the source (about two rings; the\n"
         "saddle's first geodesic samples are at arc length 0.02, so its coarsest column has few points), over\n"
         "all sources:\n\n";
-  table_head(md, main_surfaces);
-  for (const auto& [key, name] : method_rows) {
-    if (key == "cgal_heat") continue;  // distances only
-    md << "| " << name << " |";
-    for (const auto& s : main_surfaces)
-      for (const auto& l : labels) {
-        const auto* r = find(s, l, key);
-        md << ' ' << (r ? paper_style(r->errors.angle_max_near) : std::string()) << " |";
-      }
-    md << "\n";
-  }
+  // One row per method with angles (CGAL's heat method gives distances only).
+  auto near_source_table = [&](const std::vector<std::string>& surfaces) {
+    table_head(md, surfaces);
+    for (const auto& [key, name] : method_rows) {
+      if (key == "cgal_heat") continue;
+      md << "| " << name << " |";
+      for (const auto& s : surfaces)
+        for (const auto& l : labels) {
+          const auto* r = find(s, l, key);
+          md << ' ' << (r ? paper_style(r->errors.angle_max_near) : std::string()) << " |";
+        }
+      md << "\n";
+    }
+  };
+  near_source_table(main_surfaces);
   md << "\nThe same for the jittered meshes:\n\n";
-  table_head(md, irregular_surfaces);
-  for (const auto& [key, name] : method_rows) {
-    if (key == "cgal_heat") continue;  // distances only
-    md << "| " << name << " |";
-    for (const auto& s : irregular_surfaces)
-      for (const auto& l : labels) {
-        const auto* r = find(s, l, key);
-        md << ' ' << (r ? paper_style(r->errors.angle_max_near) : std::string()) << " |";
-      }
-    md << "\n";
-  }
+  near_source_table(irregular_surfaces);
 
   // Targets.
   auto check = [&](const std::string& name, const std::string& col, double value, double bound) {
