@@ -420,8 +420,7 @@ class Heat_exponential_map
   // meshes and fold triangles over (doc/results.md, section 0).
   double blended_distance(int s, int v, double r, const internal::Source_one_ring& ring) const {
     const double w = heat_weight(r);
-    if (w == 1.0 || std::find(ring.vertex.begin(), ring.vertex.end(), v) == ring.vertex.end())
-      return r;
+    if (w == 1.0 || ring.position(v) < 0) return r;
     const double edge =
         internal::norm(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
     return w * r + (1 - w) * edge;
@@ -760,8 +759,8 @@ template <class TM, class VPM, class S>
 double Heat_exponential_map<TM, VPM, S>::near_source_angle(
     int s, int v, const internal::Tangent_frame& frame,
     const internal::Source_one_ring& ring) const {
-  for (std::size_t k = 0; k < ring.vertex.size(); ++k)
-    if (ring.vertex[k] == v) return ring.angle[k] - ring.reference_angle;
+  if (const int k = ring.position(v); k >= 0)
+    return ring.angle[static_cast<std::size_t>(k)] - ring.reference_angle;
   const double projected =
       frame.angle_of(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
   return ring.native_angle(projected) - ring.reference_angle;

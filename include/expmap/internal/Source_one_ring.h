@@ -46,6 +46,12 @@ struct Source_one_ring {
   /// angle is extrapolated from it; where every wedge around the direction
   /// folds over in projection, the nearest neighbour's offset is used.
   double native_angle(double projected_angle) const;
+
+  /// The position of `v` among the neighbours, or -1 if it is not one.
+  int position(int v) const {
+    const auto it = std::find(vertex.begin(), vertex.end(), v);
+    return it == vertex.end() ? -1 : static_cast<int>(it - vertex.begin());
+  }
 };
 
 namespace one_ring_detail {
