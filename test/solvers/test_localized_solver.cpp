@@ -59,9 +59,75 @@ void check_against_full_solve(unsigned seed, bool pruned = false) {
   }
 }
 
+// An extendable solve returns rows in three rounds (each adding new rows
+// and repeating some old ones); every round must equal the full solve, and
+// an ordinary solve on the same workspace afterwards too (the block was
+// left clean).
+template <class Solver>
+void check_extensions_against_full_solve(unsigned seed) {
+  const Matrix A = random_grid_operator(60, 50, seed);
+  const int n = static_cast<int>(A.rows());
+  Solver solver;
+  solver.factor(A);
+  expmap::internal::Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+  std::mt19937 rng(seed + 11);
+  std::uniform_int_distribution<int> pick(0, n - 1);
+  auto compare = [&](const std::vector<int>& rows, const std::vector<double>& out, int width,
+                     const Eigen::MatrixXd& B) {
+    for (int c = 0; c < width; ++c) {
+      const Eigen::VectorXd x = solver.solve(B.col(c));
+      const double scale = x.cwiseAbs().maxCoeff();
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        BOOST_TEST(std::abs(out[i * width + c] - x[rows[i]]) <= 1e-12 * scale);
+    }
+  };
+  for (int trial = 0; trial < 4; ++trial) {
+    for (int width : {1, 2, 3, 9}) {
+      std::vector<expmap::internal::Rhs_entry> entries;
+      Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, width);
+      for (int c = 0; c < width; ++c) {
+        const int row = pick(rng);
+        entries.push_back({row, c, 1.0 + c});
+        B(row, c) += 1.0 + c;
+      }
+      // Rows around a centre, as a query's candidates grow: a small set,
+      // then larger ones that contain it.
+      std::vector<int> rows;
+      for (int round = 0; round < 3; ++round) {
+        const int more = round == 0 ? 40 : 150;
+        for (int k = 0; k < more; ++k) rows.push_back(pick(rng));
+        std::vector<double> out(rows.size() * width);
+        const auto stats =
+            round == 0
+                ? local.solve_extendable(entries, width, rows.data(), rows.size(), out.data(), *ws)
+                : local.extend(rows.data(), rows.size(), out.data(), *ws);
+        if (round == 0) BOOST_TEST(stats.forward_nodes > 0u);
+        if (round > 0) BOOST_TEST(stats.forward_nodes == 0u);
+        compare(rows, out, width, B);
+      }
+    }
+  }
+  // An ordinary solve after an extendable one (released implicitly).
+  std::vector<expmap::internal::Rhs_entry> entries{{pick(rng), 0, 1.0}};
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, 1);
+  B(entries[0].row, 0) = 1.0;
+  std::vector<int> rows(n);
+  for (int i = 0; i < n; ++i) rows[i] = i;
+  std::vector<double> out(rows.size());
+  local.solve(entries, 1, rows.data(), rows.size(), out.data(), *ws);
+  compare(rows, out, 1, B);
+  BOOST_CHECK_THROW(local.extend(rows.data(), rows.size(), out.data(), *ws), std::logic_error);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(localized_solver)
+
+BOOST_AUTO_TEST_CASE(extended_solves_equal_full_solves) {
+  check_extensions_against_full_solve<expmap::Cholmod_solver>(21);
+  check_extensions_against_full_solve<expmap::Eigen_simplicial_solver>(22);
+}
 
 BOOST_AUTO_TEST_CASE(cholmod_localized_equals_full_solve) {
   check_against_full_solve<expmap::Cholmod_solver>(1);

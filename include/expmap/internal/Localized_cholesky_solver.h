@@ -77,6 +77,7 @@ class Localized_cholesky_solver {
       m_forward_entry.assign(supernodes, 0);
       m_backward_entry.assign(supernodes, 0);
       m_stamp = 0;
+      m_open_width = 0;
     }
     std::uint32_t next_stamp() {
       if (++m_stamp == 0) {  // wrapped around: the stamps must start afresh
@@ -92,6 +93,11 @@ class Localized_cholesky_solver {
     std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
     std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
     std::vector<int> m_kept;  // pruned solves: propagated columns or rows of a supernode
+    // An extendable solve left in the block: its kernel width (0 if none)
+    // and its number of columns; the entries of its supernodes before an
+    // extension, and the supernodes the extension adds.
+    int m_open_width = 0, m_open_columns = 0;
+    std::vector<int> m_previous_entry, m_extension_nodes;
     std::uint32_t m_stamp = 0;
     int m_size = -1;
   };
@@ -142,6 +148,64 @@ class Localized_cholesky_solver {
                          const int* rows, std::size_t row_count, double* out,
                          Workspace& ws) const {
     return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{});
+  }
+
+  /// As `solve()` (at most `max_block_width` columns), but keeps the
+  /// solution in the workspace so that `extend()` can return it on more
+  /// rows, redoing neither the forward substitution nor the back substitution
+  /// of the nodes already solved. The workspace stays busy until the next
+  /// solve of any kind on it, or `release()`.
+  Solve_statistics solve_extendable(const std::vector<Rhs_entry>& entries, int width,
+                                    const int* rows, std::size_t row_count, double* out,
+                                    Workspace& ws) const {
+    if (width < 1 || width > max_block_width)
+      throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
+    const auto start = std::chrono::steady_clock::now();
+    prepare(ws);
+    Solve_statistics stats =
+        dispatch(entries, width, rows, row_count, out, ws, Pruning{}, /*keep=*/true);
+    stats.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
+
+  /// The solution of the last `solve_extendable()` on `ws` at `rows` (which
+  /// may repeat rows returned before), written as `solve()` writes it: the
+  /// same numbers as a full solve. Only the back substitution of the
+  /// supernodes the new rows need beyond those already solved is done.
+  /// \pre `ws` holds an extendable solve (else std::logic_error).
+  Solve_statistics extend(const int* rows, std::size_t row_count, double* out,
+                          Workspace& ws) const {
+    if (ws.m_open_width == 0)
+      throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
+    const auto start = std::chrono::steady_clock::now();
+    Solve_statistics stats;
+    switch (ws.m_open_width) {
+      case 1: stats = extend_block<1>(rows, row_count, out, ws); break;
+      case 2: stats = extend_block<2>(rows, row_count, out, ws); break;
+      case 4: stats = extend_block<4>(rows, row_count, out, ws); break;
+      case 8: stats = extend_block<8>(rows, row_count, out, ws); break;
+      case 12: stats = extend_block<12>(rows, row_count, out, ws); break;
+      default: stats = extend_block<16>(rows, row_count, out, ws); break;
+    }
+    stats.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
+
+  /// Ends an extendable solve: the workspace is ready for any solve (which
+  /// would release it too).
+  void release(Workspace& ws) const {
+    if (ws.m_open_width == 0) return;
+    switch (ws.m_open_width) {
+      case 1: clear_block<1>(ws); break;
+      case 2: clear_block<2>(ws); break;
+      case 4: clear_block<4>(ws); break;
+      case 8: clear_block<8>(ws); break;
+      case 12: clear_block<12>(ws); break;
+      default: clear_block<16>(ws); break;
+    }
+    ws.m_open_width = 0;
   }
 
   /// As `solve()`, but an entry of the forward solution y (L y = P b) or of
@@ -229,8 +293,7 @@ class Localized_cholesky_solver {
                                    Workspace& ws, Pruning pruning) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
     const auto start = std::chrono::steady_clock::now();
-    if (!ws.fits(m_factor.size, number_of_supernodes()))
-      ws.resize(m_factor.size, number_of_supernodes());
+    prepare(ws);
     Solve_statistics total;
     std::vector<Rhs_entry> chunk;
     std::vector<double> chunk_out;
@@ -261,16 +324,26 @@ class Localized_cholesky_solver {
     return total;
   }
 
+  // A workspace of the right size with a zero block (an extendable solve
+  // left in it is released).
+  void prepare(Workspace& ws) const {
+    if (!ws.fits(m_factor.size, number_of_supernodes()))
+      ws.resize(m_factor.size, number_of_supernodes());
+    else
+      release(ws);
+  }
+
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
                             std::size_t row_count, double* out, Workspace& ws,
-                            Pruning pruning) const {
-    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning);
+                            Pruning pruning, bool keep = false) const {
+    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning, keep);
     // Two columns: the star solve of an angle estimator linear in the heat.
-    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, pruning);
-    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, width);
-    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, width);
-    if (width <= 12) return solve_block<12>(entries, rows, row_count, out, ws, pruning, width);
-    return solve_block<16>(entries, rows, row_count, out, ws, pruning, width);
+    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, pruning, keep);
+    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, keep, width);
+    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, keep, width);
+    if (width <= 12)
+      return solve_block<12>(entries, rows, row_count, out, ws, pruning, keep, width);
+    return solve_block<16>(entries, rows, row_count, out, ws, pruning, keep, width);
   }
 
   // Builds a topological order (descendants before ancestors) of the
@@ -311,7 +384,7 @@ class Localized_cholesky_solver {
   template <int W>
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
-                               Pruning pruning, int width = W) const {
+                               Pruning pruning, bool keep, int width = W) const {
     const auto& F = m_factor;
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
     auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
@@ -354,20 +427,72 @@ class Localized_cholesky_solver {
       stats.factor_entries += entries_of(sn, first);
     }
 
+    read_rows<W>(rows, row_count, out, ws, width);
+    if (keep) {
+      ws.m_open_width = W;
+      ws.m_open_columns = width;
+    } else {
+      clear_block<W>(ws);
+    }
+    return stats;
+  }
+
+  // Writes the solution at `rows` from the block (row-major, `width` columns).
+  template <int W>
+  void read_rows(const int* rows, std::size_t row_count, double* out, const Workspace& ws,
+                 int width = W) const {
     for (std::size_t i = 0; i < row_count; ++i) {
-      const double* x = row_of(F.inverse_permutation[rows[i]]);
+      const double* x = ws.m_block + static_cast<std::size_t>(m_factor.inverse_permutation[rows[i]]) * W;
       for (int c = 0; c < width; ++c) out[i * width + c] = x[c];
     }
+  }
 
-    // Leave the block zero for the next solve: only touched rows are cleared
-    // (a supernode's own rows; rows below it belong to ancestors, also listed).
+  // Leaves the block zero for the next solve: only touched rows are cleared
+  // (a supernode's own rows; rows below it belong to ancestors, also listed).
+  template <int W>
+  void clear_block(Workspace& ws) const {
     auto clear = [&](int k, int first) {
-      const auto& sn = F.supernode[k];
-      std::fill_n(row_of(sn.first_column + first), static_cast<std::size_t>(sn.ncol - first) * W,
-                  0.0);
+      const auto& sn = m_factor.supernode[k];
+      std::fill_n(ws.m_block + static_cast<std::size_t>(sn.first_column + first) * W,
+                  static_cast<std::size_t>(sn.ncol - first) * W, 0.0);
     };
     for (const int k : ws.m_forward_nodes) clear(k, ws.m_forward_entry[k]);
     for (const int k : ws.m_backward_nodes) clear(k, ws.m_backward_entry[k]);
+  }
+
+  // extend() for a block of width W. The new rows' paths reach supernodes
+  // already solved (then at most their entry column moves down: only the
+  // columns above the old entry are solved) or new ones (below the solved
+  // ones in the tree: solved after them, top-down).
+  template <int W>
+  Solve_statistics extend_block(const int* rows, std::size_t row_count, double* out,
+                                Workspace& ws) const {
+    const auto& F = m_factor;
+    double* y = ws.m_block;
+    Solve_statistics stats;
+    ws.m_previous_entry.resize(ws.m_backward_nodes.size());
+    for (std::size_t i = 0; i < ws.m_backward_nodes.size(); ++i)
+      ws.m_previous_entry[i] = ws.m_backward_entry[ws.m_backward_nodes[i]];
+    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
+          ws.m_backward_stamp, ws.m_backward_entry, ws.m_stamp, ws.m_extension_nodes, ws.m_path);
+    auto solve_columns = [&](int k, int first, int end) {
+      const auto& sn = F.supernode[k];
+      stats.backward_nodes += static_cast<std::size_t>(end - first);
+      backward_supernode<W>(sn, first, y + static_cast<std::size_t>(sn.first_column) * W, y, end);
+      stats.factor_entries += entries_of(sn, first, end);
+    };
+    for (std::size_t i = ws.m_backward_nodes.size(); i-- > 0;) {
+      const int k = ws.m_backward_nodes[i];
+      if (ws.m_backward_entry[k] < ws.m_previous_entry[i])
+        solve_columns(k, ws.m_backward_entry[k], ws.m_previous_entry[i]);
+    }
+    for (auto it = ws.m_extension_nodes.rbegin(); it != ws.m_extension_nodes.rend(); ++it)
+      solve_columns(*it, ws.m_backward_entry[*it], F.supernode[*it].ncol);
+    // The new nodes are descendants of the old ones: in front, the list
+    // stays a topological order for the next extension.
+    ws.m_backward_nodes.insert(ws.m_backward_nodes.begin(), ws.m_extension_nodes.begin(),
+                               ws.m_extension_nodes.end());
+    read_rows<W>(rows, row_count, out, ws, ws.m_open_columns);
     return stats;
   }
 
@@ -430,16 +555,24 @@ class Localized_cholesky_solver {
   }
 
   // Back substitution through one supernode, for its columns from `first`
-  // on: the rows below it (already solved: they belong to ancestors) are
-  // subtracted, then the diagonal block is solved bottom-up, each solved row
-  // subtracted from the rows above it (row-contiguous in the row-major block).
+  // to `end` (all the rest by default; the columns from `end` on are solved
+  // already): the rows below it (already solved: they belong to ancestors)
+  // are subtracted, then the diagonal block is solved bottom-up, each solved
+  // row subtracted from the rows above it (row-contiguous in the row-major
+  // block).
   template <int W>
   void backward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                          const double* y) const {
+                          const double* y, int end = -1) const {
     const auto& F = m_factor;
-    backward_below<W>(sn, first, ys, y);
+    if (end < 0) end = sn.ncol;
+    backward_below<W>(sn, first, ys, y, end);
     const double* diagonal = F.value.data() + sn.diagonal;
-    for (int r = sn.ncol - 1; r >= first; --r) {
+    for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
+      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      for (int a = first; a < end; ++a)
+        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * ys[r * W + w];
+    }
+    for (int r = end - 1; r >= first; --r) {
       double* yr = ys + r * W;
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       std::array<double, W> xr;
@@ -518,7 +651,7 @@ class Localized_cholesky_solver {
     std::size_t read = kept.size() * width;
     if (static_cast<int>(kept.size()) == sn.nbelow) {
       // Nothing to skip below: the register-blocked kernel of the full solve.
-      backward_below<W>(sn, first, ys, y);
+      backward_below<W>(sn, first, ys, y, sn.ncol);
     } else {
       for (const int t : kept) {
         const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
@@ -549,21 +682,24 @@ class Localized_cholesky_solver {
   // (most of the tree) would otherwise cost.
   template <int W>
   void backward_below(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                      const double* y) const {
+                      const double* y, int end) const {
     const double* below = m_factor.value.data() + sn.below;
     const int* below_rows = m_factor.row_index.data() + sn.below_rows;
     constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
     int c = first;
-    for (; c + block <= sn.ncol; c += block)
+    for (; c + block <= end; c += block)
       subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-    for (; c < sn.ncol; ++c)
+    for (; c < end; ++c)
       subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
   }
 
-  // Entries of the supernode's columns from `first` on.
-  static std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first) {
-    const std::size_t c = static_cast<std::size_t>(sn.ncol - first);
-    return c * (c + 1) / 2 + static_cast<std::size_t>(sn.nbelow) * c;
+  // Entries of the supernode's columns from `first` on (to `end`).
+  static std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first,
+                                int end = -1) {
+    if (end < 0) end = sn.ncol;
+    const std::size_t c = static_cast<std::size_t>(end - first);
+    const std::size_t rows_below_end = static_cast<std::size_t>(sn.ncol - end + sn.nbelow);
+    return c * (c + 1) / 2 + rows_below_end * c;
   }
 
   void compute_tree_height() {
