@@ -345,14 +345,42 @@ class Heat_exponential_map
   // Candidates solved for heat per patch vertex wanted, beyond `region_growth`.
   static constexpr double candidate_excess = 1.3;
 
-  // Fills ws.candidates, nearest first by graph distance, for a patch
-  // `growth` times larger than asked.
+  // Candidates per region vertex when the first candidates cut the region
+  // short (see `region_is_cut_short`).
+  static constexpr double widened_candidate_excess = 2.5;
+
+  // Fills ws.candidates, nearest first by graph distance, `excess` times as
+  // many as a patch `growth` times larger than asked.
   void grow_candidates(int s, const Patch& patch, std::size_t target,
-                       const std::vector<int>& wanted, double growth, Workspace& ws) const;
-  // Solves the heat from the source on the candidates, picks the region and
-  // integrates the distance on it: fills ws.heat (one value per candidate),
-  // ws.region, ws.heat_row and ws.potential (distances).
-  Solve_statistics solve_distance(int s, bool whole_component, Workspace& ws) const;
+                       const std::vector<int>& wanted, double growth, double excess,
+                       Workspace& ws) const;
+  // Step 1 (distance part): the heat from the source on the candidates
+  // (fills ws.heat, one value per candidate).
+  Solve_statistics solve_source_heat(int s, Workspace& ws) const;
+  // The same heat on the candidates after they were widened.
+  Solve_statistics extend_source_heat(Workspace& ws) const;
+  internal::Localized_cholesky_solver::Workspace& source_heat_workspace(Workspace& ws) const {
+    return m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
+  }
+  // Orders ws.heat_row so that its first `kept` rows are the hottest
+  // candidates (the source among them), the region.
+  void choose_region(std::size_t kept, Workspace& ws) const;
+  // Whether one of the `hottest` candidates lies on the candidates' edge:
+  // the breadth-first candidates then cut the heat's level sets short on
+  // that side, and a patch of `hottest` vertices would come too close to the
+  // region's edge. Needs the candidates marked and `choose_region` done.
+  bool region_is_cut_short(std::size_t hottest, Workspace& ws) const;
+  // Marks the chosen region and fills ws.region and ws.region_heat.
+  void mark_region(Workspace& ws) const;
+  // Steps 2 and 3: integrates the normalized heat gradient on the region
+  // (fills ws.divergence and ws.potential, the distances).
+  Solve_statistics integrate_distance(int s, Workspace& ws) const;
+  // Orders candidate rows by their heat from the source, hottest first.
+  static auto hotter(const Workspace& ws) {
+    return [&ws](std::size_t a, std::size_t b) {
+      return ws.heat[a] > ws.heat[b] || (ws.heat[a] == ws.heat[b] && a < b);
+    };
+  }
   // Solves the heat from the source and its neighbours for the patch
   // vertices `ws.patch`: fills ws.star_heat.
   Solve_statistics solve_star_heat(const internal::Star_gradient& star, Workspace& ws) const;
@@ -448,41 +476,63 @@ class Heat_exponential_map
 };
 
 template <class TM, class VPM, class S>
-Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool whole_component,
-                                                                 Workspace& ws) const {
-  const std::size_t n_candidates = ws.candidates.size();
-  Solve_statistics stats;
-
-  // Step 1 (distance part): the heat from the source on the candidates.
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat(int s, Workspace& ws) const {
   ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
-  ws.heat.resize(n_candidates);
-  auto& heat_workspace = m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
-  stats += distance_heat().solve(ws.rhs, 1, ws.candidates.data(), n_candidates, ws.heat.data(),
-                                 heat_workspace);
+  ws.heat.resize(ws.candidates.size());
+  // Extendable: if the candidates are widened, only the back substitution
+  // of the new candidates' supernodes is added.
+  return distance_heat().solve_extendable(ws.rhs, 1, ws.candidates.data(), ws.candidates.size(),
+                                          ws.heat.data(), source_heat_workspace(ws));
+}
 
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::extend_source_heat(Workspace& ws) const {
+  ws.heat.resize(ws.candidates.size());
+  return distance_heat().extend(ws.candidates.data(), ws.candidates.size(), ws.heat.data(),
+                                source_heat_workspace(ws));
+}
+
+template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::choose_region(std::size_t kept, Workspace& ws) const {
   // The region the distance is integrated on: the candidates with the most
   // heat from the source. Heat level sets are near-geodesic circles, so the
   // cut-off of the Poisson right-hand side is nearly rotationally symmetric
   // and shifts distances by a nearly constant amount, which the
   // normalization at the source removes. (A graph-distance region has
   // polygonal edges that bend the distance field instead.)
-  const std::size_t kept =
-      whole_component ? n_candidates
-                      : static_cast<std::size_t>(std::ceil(static_cast<double>(n_candidates) /
-                                                           candidate_excess));
+  const std::size_t n_candidates = ws.candidates.size();
+  kept = std::min(kept, n_candidates);
   ws.heat_row.resize(n_candidates);
   std::iota(ws.heat_row.begin(), ws.heat_row.end(), std::size_t{0});
-  auto hotter = [&](std::size_t a, std::size_t b) {
-    return ws.heat[a] > ws.heat[b] || (ws.heat[a] == ws.heat[b] && a < b);
-  };
   if (kept < n_candidates)
     std::nth_element(ws.heat_row.begin(), ws.heat_row.begin() + static_cast<std::ptrdiff_t>(kept),
-                     ws.heat_row.end(), hotter);
+                     ws.heat_row.end(), hotter(ws));
   ws.heat_row.resize(kept);
   // The source leads the region (its heat is the largest, but a poor mesh
   // could break that tie; keep it regardless).
   const auto source_row = std::find(ws.heat_row.begin(), ws.heat_row.end(), std::size_t{0});
   if (source_row == ws.heat_row.end()) ws.heat_row.back() = 0;
+}
+
+template <class TM, class VPM, class S>
+bool Heat_exponential_map<TM, VPM, S>::region_is_cut_short(std::size_t hottest,
+                                                           Workspace& ws) const {
+  hottest = std::min(hottest, ws.heat_row.size());
+  if (hottest < ws.heat_row.size())
+    std::nth_element(ws.heat_row.begin(), ws.heat_row.begin() + static_cast<std::ptrdiff_t>(hottest),
+                     ws.heat_row.end(), hotter(ws));
+  const auto& m = m_indexed.arrays;
+  for (std::size_t i = 0; i < hottest; ++i) {
+    const int v = ws.candidates[ws.heat_row[i]];
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
+      if (!ws.in_region.is_marked(m.neighbor[p])) return true;
+  }
+  return false;
+}
+
+template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::mark_region(Workspace& ws) const {
+  const std::size_t kept = ws.heat_row.size();
   std::sort(ws.heat_row.begin(), ws.heat_row.end());
   ws.region.resize(kept);
   ws.region_heat.resize(kept);
@@ -492,7 +542,12 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_distance(int s, bool wh
     ws.region_heat[i] = ws.heat[ws.heat_row[i]];
     ws.in_region.mark(ws.region[i], static_cast<int>(i));
   }
+}
 
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::integrate_distance(int s, Workspace& ws) const {
+  const std::size_t kept = ws.region.size();
+  Solve_statistics stats;
   // Step 2: divergence of the normalized heat gradient, from the faces whose
   // three corners lie in the region (so the right-hand side sums to zero).
   ws.divergence.assign(kept, 0.0);
@@ -568,10 +623,11 @@ template <class TM, class VPM, class S>
 void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch,
                                                        std::size_t target,
                                                        const std::vector<int>& wanted,
-                                                       double growth, Workspace& ws) const {
+                                                       double growth, double excess,
+                                                       Workspace& ws) const {
   // Graph distance along edges bounds the geodesic distance from above, so
   // the candidates are taken generously; the query checks the result.
-  const double radius_scale = std::sqrt(growth * candidate_excess) * 1.1;
+  const double radius_scale = std::sqrt(growth * excess) * 1.1;
   auto grow = [&](auto keep) {
     internal::grow_region(m_indexed.arrays, s, ws.in_region, ws.seen, ws.tentative, ws.candidates, keep);
   };
@@ -594,7 +650,7 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
     // Only the count matters here: the region is cut from the candidates by
     // heat, so a breadth-first search (no heap) is enough.
     const std::size_t budget = static_cast<std::size_t>(
-        std::ceil(growth * candidate_excess * static_cast<double>(target))) + 16;
+        std::ceil(growth * excess * static_cast<double>(target))) + 16;
     internal::grow_region_by_hops(m_indexed.arrays, s, ws.in_region, budget, ws.candidates);
   }
 }
@@ -621,10 +677,36 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   // clear of it by this factor in distance (a geodesic disk with
   // `region_growth` times the patch's vertices has sqrt(region_growth)).
   const double margin = std::max(1.0, 0.85 * std::sqrt(m_options.region_growth));
+  // Breadth-first candidates (patches given by a vertex count) cut the
+  // heat's level sets short on the side of the short edges. That is checked
+  // on the heat, before the distance is integrated: the hottest candidates,
+  // as many as a disk `margin` times the patch's radius holds, must not
+  // touch the candidates' edge. Otherwise the candidates are widened (the
+  // region keeps its size), which costs the back substitution of the new
+  // candidates only; a retry after the distance costs a whole query.
+  const bool breadth_first = patch.kind() == Patch::Kind::fraction ||
+                             patch.kind() == Patch::Kind::vertex_count;
+  const std::size_t hottest_inside =
+      static_cast<std::size_t>(std::ceil(margin * margin * static_cast<double>(target)));
   for (double growth = m_options.region_growth;; growth *= 2) {
-    grow_candidates(s, patch, target, wanted, growth, *ws);
-    const bool whole_component = ws->candidates.size() == component;
-    result.statistics += solve_distance(s, whole_component, *ws);
+    grow_candidates(s, patch, target, wanted, growth, candidate_excess, *ws);
+    bool whole_component = ws->candidates.size() == component;
+    // A retry extends the first attempt's heat to its larger candidates.
+    result.statistics += growth == m_options.region_growth ? solve_source_heat(s, *ws)
+                                                             : extend_source_heat(*ws);
+    const std::size_t kept =
+        whole_component ? ws->candidates.size()
+                        : static_cast<std::size_t>(std::ceil(
+                              static_cast<double>(ws->candidates.size()) / candidate_excess));
+    choose_region(kept, *ws);
+    if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws)) {
+      grow_candidates(s, patch, target, wanted, growth, widened_candidate_excess, *ws);
+      whole_component = ws->candidates.size() == component;
+      result.statistics += extend_source_heat(*ws);
+      choose_region(whole_component ? ws->candidates.size() : kept, *ws);
+    }
+    mark_region(*ws);
+    result.statistics += integrate_distance(s, *ws);
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);
     const double reach = patch.kind() == Patch::Kind::geodesic_radius
                              ? patch.radius()
