@@ -166,7 +166,10 @@ inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
   const double root_t = std::sqrt(time);
   std::array<double, 2> g = fitted;
   for (int step = 0; step < 5; ++step) {
-    const double length = std::hypot(g[0], g[1]);
+    // std::hypot costs as much as the rest of a step; its guard against
+    // overflow is kept for squares that are not normal numbers.
+    const double square = g[0] * g[0] + g[1] * g[1];
+    const double length = std::isnormal(square) ? std::sqrt(square) : std::hypot(g[0], g[1]);
     if (!(length > 0) || !std::isfinite(length)) return fitted;
     const double nx = g[0] / length, ny = g[1] / length;
     const double a = -(1 / root_t + 1 / (2 * r)) / r, b = 1 / (2 * r * r);
