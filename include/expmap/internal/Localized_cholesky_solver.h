@@ -572,7 +572,28 @@ class Localized_cholesky_solver {
       for (int a = first; a < end; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * ys[r * W + w];
     }
-    for (int r = end - 1; r >= first; --r) {
+    // Four rows at a time: their own 4 x 4 triangle first, then the rows
+    // above them updated by all four in one pass (each row of ys read and
+    // written once per four rows of L instead of once per row).
+    int r = end - 1;
+    for (; r - 3 >= first; r -= 4) {
+      const double* l[4];
+      std::array<std::array<double, W>, 4> x;
+      for (int k = 0; k < 4; ++k) {
+        const int row = r - k;
+        l[k] = diagonal + Supernodal_factor::triangle_row(row);
+        double* yr = ys + row * W;
+        const double inverse = m_inverse_diagonal[sn.first_column + row];
+        for (int w = 0; w < W; ++w) x[k][w] = yr[w] *= inverse;
+        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
+          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
+      }
+      for (int a = first; a < r - 3; ++a)
+        for (int w = 0; w < W; ++w)
+          ys[a * W + w] -= l[0][a] * x[0][w] + l[1][a] * x[1][w] + l[2][a] * x[2][w] +
+                           l[3][a] * x[3][w];
+    }
+    for (; r >= first; --r) {
       double* yr = ys + r * W;
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       std::array<double, W> xr;
@@ -689,6 +710,18 @@ class Localized_cholesky_solver {
     int c = first;
     for (; c + block <= end; c += block)
       subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+    // The rest in halving blocks: each pass gathers every solved row below
+    // once, and most supernodes are narrower than a block.
+    if (block > 4 && c + 4 <= end) {
+      subtract_below<W, (block > 4 ? 4 : 1)>(below + c, sn.ncol, below_rows, sn.nbelow, y,
+                                              ys + c * W);
+      c += block > 4 ? 4 : 1;
+    }
+    if (block > 2 && c + 2 <= end) {
+      subtract_below<W, (block > 2 ? 2 : 1)>(below + c, sn.ncol, below_rows, sn.nbelow, y,
+                                              ys + c * W);
+      c += block > 2 ? 2 : 1;
+    }
     for (; c < end; ++c)
       subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
   }
