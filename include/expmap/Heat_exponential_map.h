@@ -211,8 +211,10 @@ class Heat_exponential_map
     internal::Vertex_marks in_region, seen, wanted;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
+    std::size_t breadth_first_head = 0;  // where their breadth-first search can go on
     std::vector<int> region;           // the hottest candidates: where distance is integrated
     std::vector<std::size_t> heat_row; // row of each region vertex in `heat`
+    std::vector<char> chosen;          // per candidate row: in the region
     std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
     std::vector<double> heat;          // heat from the source on the candidates
@@ -349,6 +351,12 @@ class Heat_exponential_map
   // short (see `region_is_cut_short`).
   static constexpr double widened_candidate_excess = 2.5;
 
+  // Breadth-first candidates for a patch of `target` vertices `growth` times
+  // larger, `excess` times as many.
+  static std::size_t breadth_first_budget(std::size_t target, double growth, double excess) {
+    return static_cast<std::size_t>(std::ceil(growth * excess * static_cast<double>(target))) +
+           16;
+  }
   // Fills ws.candidates, nearest first by graph distance, `excess` times as
   // many as a patch `growth` times larger than asked.
   void grow_candidates(int s, const Patch& patch, std::size_t target,
@@ -532,8 +540,14 @@ bool Heat_exponential_map<TM, VPM, S>::region_is_cut_short(std::size_t hottest,
 
 template <class TM, class VPM, class S>
 void Heat_exponential_map<TM, VPM, S>::mark_region(Workspace& ws) const {
+  // The chosen rows in candidate order (the source first), by one pass over
+  // the candidates instead of a sort.
   const std::size_t kept = ws.heat_row.size();
-  std::sort(ws.heat_row.begin(), ws.heat_row.end());
+  ws.chosen.assign(ws.candidates.size(), 0);
+  for (std::size_t row : ws.heat_row) ws.chosen[row] = 1;
+  ws.heat_row.clear();
+  for (std::size_t row = 0; row < ws.chosen.size(); ++row)
+    if (ws.chosen[row]) ws.heat_row.push_back(row);
   ws.region.resize(kept);
   ws.region_heat.resize(kept);
   ws.in_region.next_query();
@@ -649,9 +663,9 @@ void Heat_exponential_map<TM, VPM, S>::grow_candidates(int s, const Patch& patch
   } else {
     // Only the count matters here: the region is cut from the candidates by
     // heat, so a breadth-first search (no heap) is enough.
-    const std::size_t budget = static_cast<std::size_t>(
-        std::ceil(growth * excess * static_cast<double>(target))) + 16;
-    internal::grow_region_by_hops(m_indexed.arrays, s, ws.in_region, budget, ws.candidates);
+    ws.breadth_first_head = internal::grow_region_by_hops(
+        m_indexed.arrays, s, ws.in_region, breadth_first_budget(target, growth, excess),
+        ws.candidates);
   }
 }
 
@@ -700,7 +714,10 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
                               static_cast<double>(ws->candidates.size()) / candidate_excess));
     choose_region(kept, *ws);
     if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws)) {
-      grow_candidates(s, patch, target, wanted, growth, widened_candidate_excess, *ws);
+      ws->breadth_first_head = internal::continue_region_by_hops(
+          m_indexed.arrays, ws->in_region,
+          breadth_first_budget(target, growth, widened_candidate_excess), ws->candidates,
+          ws->breadth_first_head);
       whole_component = ws->candidates.size() == component;
       result.statistics += extend_source_heat(*ws);
       choose_region(whole_component ? ws->candidates.size() : kept, *ws);

@@ -90,21 +90,22 @@ void grow_region(const Mesh_arrays& m, int source, Vertex_marks& in_region,
   }
 }
 
-/// Breadth-first search from `source` over the mesh edges, appending up to
-/// `budget` vertices to `region` (nearest first in edge hops) and marking
-/// each with its position. Cheaper than `grow_region` (no heap, no lengths)
-/// where only the size of the region matters.
-inline void grow_region_by_hops(const Mesh_arrays& m, int source, Vertex_marks& in_region,
-                                std::size_t budget, std::vector<int>& region) {
-  in_region.next_query();
-  in_region.mark(source, 0);
+/// Continues a breadth-first search whose vertices `region` holds (marked in
+/// `in_region` with their positions, nearest first in edge hops) from the
+/// vertex at position `head`, until `budget` vertices are found or the
+/// component is exhausted. Returns the position to continue from later: the
+/// vertex whose neighbours were being added when the budget was reached
+/// (they are added again, and only the unmarked ones are new).
+inline std::size_t continue_region_by_hops(const Mesh_arrays& m, Vertex_marks& in_region,
+                                           std::size_t budget, std::vector<int>& region,
+                                           std::size_t head) {
+  std::size_t size = region.size();
+  if (size >= budget) return head;
   // Room for the last vertex's whole neighbourhood: every neighbour is
   // written, and only a new one is kept (no branch to mispredict on the
   // half of the neighbours a search finds already visited).
   region.resize(budget + static_cast<std::size_t>(m.max_degree) + 1);
-  region[0] = source;
-  std::size_t size = 1;
-  for (std::size_t head = 0; head < size && size < budget; ++head) {
+  for (; head < size && size < budget; ++head) {
     const int v = region[head];
     const int end = m.neighbor_start[v + 1];
     for (int p = m.neighbor_start[v]; p < end; ++p) {
@@ -113,8 +114,23 @@ inline void grow_region_by_hops(const Mesh_arrays& m, int source, Vertex_marks& 
       size += in_region.mark_if_new(w, static_cast<int>(size));
     }
   }
+  const bool budget_reached = size >= budget;
   for (std::size_t i = budget; i < size; ++i) in_region.unmark(region[i]);
   region.resize(std::min(size, budget));
+  return budget_reached ? head - 1 : head;
+}
+
+/// Breadth-first search from `source` over the mesh edges, appending up to
+/// `budget` vertices to `region` (nearest first in edge hops) and marking
+/// each with its position. Cheaper than `grow_region` (no heap, no lengths)
+/// where only the size of the region matters. Returns where
+/// `continue_region_by_hops` can take it up.
+inline std::size_t grow_region_by_hops(const Mesh_arrays& m, int source, Vertex_marks& in_region,
+                                       std::size_t budget, std::vector<int>& region) {
+  in_region.next_query();
+  in_region.mark(source, 0);
+  region.assign(1, source);
+  return continue_region_by_hops(m, in_region, budget, region, 0);
 }
 
 }  // namespace internal
