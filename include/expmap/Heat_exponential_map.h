@@ -703,11 +703,11 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   const std::size_t hottest_inside =
       static_cast<std::size_t>(std::ceil(margin * margin * static_cast<double>(target)));
   for (double growth = m_options.region_growth;; growth *= 2) {
+    const bool retry = growth > m_options.region_growth;
     grow_candidates(s, patch, target, wanted, growth, candidate_excess, *ws);
     bool whole_component = ws->candidates.size() == component;
     // A retry extends the first attempt's heat to its larger candidates.
-    result.statistics += growth == m_options.region_growth ? solve_source_heat(s, *ws)
-                                                             : extend_source_heat(*ws);
+    result.statistics += retry ? extend_source_heat(*ws) : solve_source_heat(s, *ws);
     const std::size_t kept =
         whole_component ? ws->candidates.size()
                         : static_cast<std::size_t>(std::ceil(

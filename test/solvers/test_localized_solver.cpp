@@ -18,16 +18,42 @@ using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 using expmap_test::random_grid_operator;
 
+// A random grid operator factored by a solver model, and its localized
+// solver.
+template <class Solver>
+struct Factored_grid {
+  explicit Factored_grid(unsigned seed) {
+    const Matrix A = random_grid_operator(60, 50, seed);
+    n = static_cast<int>(A.rows());
+    solver.factor(A);
+    local = expmap::internal::Localized_cholesky_solver(solver.factor_view());
+  }
+  int n = 0;
+  Solver solver;
+  expmap::internal::Localized_cholesky_solver local;
+};
+
+// Every requested row of a localized block solve (`out`, row-major, `width`
+// columns) against the solver model's own full solve of the columns of B.
+template <class Solver>
+void check_rows_against_full_solve(Solver& solver, const Eigen::MatrixXd& B, int width,
+                                   const std::vector<int>& rows, const std::vector<double>& out) {
+  for (int c = 0; c < width; ++c) {
+    const Eigen::VectorXd x = solver.solve(B.col(c));
+    const double scale = x.cwiseAbs().maxCoeff();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      BOOST_TEST(std::abs(out[i * width + c] - x[rows[i]]) <= 1e-12 * scale);
+  }
+}
+
 // Solves random sparse blocks (widths 1 to 20, split above 16) and compares
 // every requested row with the solver model's own full solve; a pruned
 // solve with drop_below = 0 must give the same numbers.
 template <class Solver>
 void check_against_full_solve(unsigned seed, bool pruned = false) {
-  const Matrix A = random_grid_operator(60, 50, seed);
-  const int n = static_cast<int>(A.rows());
-  Solver solver;
-  solver.factor(A);
-  expmap::internal::Localized_cholesky_solver local(solver.factor_view());
+  Factored_grid<Solver> grid(seed);
+  const int n = grid.n;
+  auto& local = grid.local;
   auto ws = local.make_workspace();
   std::mt19937 rng(seed + 7);
   std::uniform_int_distribution<int> pick(0, n - 1);
@@ -49,12 +75,7 @@ void check_against_full_solve(unsigned seed, bool pruned = false) {
           pruned ? local.solve_pruned(entries, width, rows.data(), rows.size(), out.data(), *ws, 0.0)
                  : local.solve(entries, width, rows.data(), rows.size(), out.data(), *ws);
       BOOST_TEST(stats.forward_nodes > 0u);
-      for (int c = 0; c < width; ++c) {
-        const Eigen::VectorXd x = solver.solve(B.col(c));
-        const double scale = x.cwiseAbs().maxCoeff();
-        for (std::size_t i = 0; i < rows.size(); ++i)
-          BOOST_TEST(std::abs(out[i * width + c] - x[rows[i]]) <= 1e-12 * scale);
-      }
+      check_rows_against_full_solve(grid.solver, B, width, rows, out);
     }
   }
 }
@@ -65,23 +86,12 @@ void check_against_full_solve(unsigned seed, bool pruned = false) {
 // left clean).
 template <class Solver>
 void check_extensions_against_full_solve(unsigned seed) {
-  const Matrix A = random_grid_operator(60, 50, seed);
-  const int n = static_cast<int>(A.rows());
-  Solver solver;
-  solver.factor(A);
-  expmap::internal::Localized_cholesky_solver local(solver.factor_view());
+  Factored_grid<Solver> grid(seed);
+  const int n = grid.n;
+  auto& local = grid.local;
   auto ws = local.make_workspace();
   std::mt19937 rng(seed + 11);
   std::uniform_int_distribution<int> pick(0, n - 1);
-  auto compare = [&](const std::vector<int>& rows, const std::vector<double>& out, int width,
-                     const Eigen::MatrixXd& B) {
-    for (int c = 0; c < width; ++c) {
-      const Eigen::VectorXd x = solver.solve(B.col(c));
-      const double scale = x.cwiseAbs().maxCoeff();
-      for (std::size_t i = 0; i < rows.size(); ++i)
-        BOOST_TEST(std::abs(out[i * width + c] - x[rows[i]]) <= 1e-12 * scale);
-    }
-  };
   for (int trial = 0; trial < 4; ++trial) {
     for (int width : {1, 2, 3, 9}) {
       std::vector<expmap::internal::Rhs_entry> entries;
@@ -91,8 +101,8 @@ void check_extensions_against_full_solve(unsigned seed) {
         entries.push_back({row, c, 1.0 + c});
         B(row, c) += 1.0 + c;
       }
-      // Rows around a centre, as a query's candidates grow: a small set,
-      // then larger ones that contain it.
+      // Row sets that grow as a query's candidates do: a small set, then
+      // larger ones that contain it (random rows, so some repeat).
       std::vector<int> rows;
       for (int round = 0; round < 3; ++round) {
         const int more = round == 0 ? 40 : 150;
@@ -104,7 +114,7 @@ void check_extensions_against_full_solve(unsigned seed) {
                 : local.extend(rows.data(), rows.size(), out.data(), *ws);
         if (round == 0) BOOST_TEST(stats.forward_nodes > 0u);
         if (round > 0) BOOST_TEST(stats.forward_nodes == 0u);
-        compare(rows, out, width, B);
+        check_rows_against_full_solve(grid.solver, B, width, rows, out);
       }
     }
   }
@@ -116,7 +126,7 @@ void check_extensions_against_full_solve(unsigned seed) {
   for (int i = 0; i < n; ++i) rows[i] = i;
   std::vector<double> out(rows.size());
   local.solve(entries, 1, rows.data(), rows.size(), out.data(), *ws);
-  compare(rows, out, 1, B);
+  check_rows_against_full_solve(grid.solver, B, 1, rows, out);
   BOOST_CHECK_THROW(local.extend(rows.data(), rows.size(), out.data(), *ws), std::logic_error);
 }
 

@@ -17,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace expmap {
@@ -179,15 +180,9 @@ class Localized_cholesky_solver {
     if (ws.m_open_width == 0)
       throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats;
-    switch (ws.m_open_width) {
-      case 1: stats = extend_block<1>(rows, row_count, out, ws); break;
-      case 2: stats = extend_block<2>(rows, row_count, out, ws); break;
-      case 4: stats = extend_block<4>(rows, row_count, out, ws); break;
-      case 8: stats = extend_block<8>(rows, row_count, out, ws); break;
-      case 12: stats = extend_block<12>(rows, row_count, out, ws); break;
-      default: stats = extend_block<16>(rows, row_count, out, ws); break;
-    }
+    Solve_statistics stats = with_open_width(ws, [&](auto width) {
+      return extend_block<decltype(width)::value>(rows, row_count, out, ws);
+    });
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -197,14 +192,7 @@ class Localized_cholesky_solver {
   /// would release it too).
   void release(Workspace& ws) const {
     if (ws.m_open_width == 0) return;
-    switch (ws.m_open_width) {
-      case 1: clear_block<1>(ws); break;
-      case 2: clear_block<2>(ws); break;
-      case 4: clear_block<4>(ws); break;
-      case 8: clear_block<8>(ws); break;
-      case 12: clear_block<12>(ws); break;
-      default: clear_block<16>(ws); break;
-    }
+    with_open_width(ws, [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
   }
 
@@ -322,6 +310,21 @@ class Localized_cholesky_solver {
     total.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return total;
+  }
+
+  // Calls f(std::integral_constant<int, W>) with the kernel width W of the
+  // extendable solve left in `ws` (one of those `dispatch` chooses).
+  template <class F>
+  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_open_width(
+      const Workspace& ws, F f) {
+    switch (ws.m_open_width) {
+      case 1: return f(std::integral_constant<int, 1>{});
+      case 2: return f(std::integral_constant<int, 2>{});
+      case 4: return f(std::integral_constant<int, 4>{});
+      case 8: return f(std::integral_constant<int, 8>{});
+      case 12: return f(std::integral_constant<int, 12>{});
+      default: return f(std::integral_constant<int, 16>{});
+    }
   }
 
   // A workspace of the right size with a zero block (an extendable solve
@@ -712,15 +715,17 @@ class Localized_cholesky_solver {
       subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
     // The rest in halving blocks: each pass gathers every solved row below
     // once, and most supernodes are narrower than a block.
-    if (block > 4 && c + 4 <= end) {
-      subtract_below<W, (block > 4 ? 4 : 1)>(below + c, sn.ncol, below_rows, sn.nbelow, y,
-                                              ys + c * W);
-      c += block > 4 ? 4 : 1;
+    if constexpr (block > 4) {
+      if (c + 4 <= end) {
+        subtract_below<W, 4>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+        c += 4;
+      }
     }
-    if (block > 2 && c + 2 <= end) {
-      subtract_below<W, (block > 2 ? 2 : 1)>(below + c, sn.ncol, below_rows, sn.nbelow, y,
-                                              ys + c * W);
-      c += block > 2 ? 2 : 1;
+    if constexpr (block > 2) {
+      if (c + 2 <= end) {
+        subtract_below<W, 2>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
+        c += 2;
+      }
     }
     for (; c < end; ++c)
       subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
