@@ -131,6 +131,35 @@ expmap::Triangle_soup jittered_unit_sphere(int subdivisions) {
   return soup;
 }
 
+// The cubic-leak fixed point, evaluated from the model of its documentation
+// (the cubic Taylor terms (g.x)^3 / 6 + (g.x) x^T Q x / 2 of the log heat),
+// not from the library's coefficient formulas: a homogeneous cubic's four
+// coefficients follow from its values at (1, 0), (0, 1), (1, 1), (1, -1).
+std::array<double, 2> leak_fixed_point_map(const expmap::internal::Star_gradient& star,
+                                           const std::array<double, 2>& fitted,
+                                           const std::array<double, 2>& g, double r, double t) {
+  const double length = std::hypot(g[0], g[1]);
+  const double n[2] = {g[0] / length, g[1] / length};
+  const double across = -(1 / std::sqrt(t) + 1 / (2 * r)) / r, along = 1 / (2 * r * r);
+  auto cubic = [&](double x, double y) {
+    const double gx = g[0] * x + g[1] * y, nx = n[0] * x + n[1] * y;
+    const double xqx = across * (x * x + y * y - nx * nx) + along * nx * nx;
+    return gx * gx * gx / 6 + gx * xqx / 2;
+  };
+  const double p10 = cubic(1, 0), p01 = cubic(0, 1), p11 = cubic(1, 1), p1m = cubic(1, -1);
+  const double c[4] = {p10, ((p11 - p1m) / 2 - p01), ((p11 + p1m) / 2 - p10), p01};
+  std::array<double, 2> next = fitted;
+  for (int k = 0; k < 4; ++k) {
+    next[0] -= c[k] * star.cubic_leak[k][0];
+    next[1] -= c[k] * star.cubic_leak[k][1];
+  }
+  return next;
+}
+
+double angle_between(const std::array<double, 2>& a, const std::array<double, 2>& b) {
+  return std::abs(std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]));
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(angle_estimators)
@@ -255,6 +284,53 @@ BOOST_AUTO_TEST_CASE(two_column_estimators_equal_the_gradient_of_every_star_colu
       }
     }
   }
+}
+
+// remove_cubic_leak returns the direction of the model's fixed point where
+// the iteration converges, and the fitted gradient where it swings or
+// diverges (strong leaks: coarse stars, far vertices), never an arbitrary
+// step of a swinging iteration (which was up to pi off on dino).
+BOOST_AUTO_TEST_CASE(cubic_leak_removal_reaches_the_fixed_point_or_keeps_the_fit) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double t = 10.0, h = 1.0;
+  int converging = 0, swinging = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    expmap::internal::Star_gradient star;
+    const double strength = std::pow(10.0, -4 + 5.5 * (unit(rng) + 1) / 2);  // 1e-4 .. 3e1
+    for (auto& row : star.cubic_leak) row = {{strength * unit(rng), strength * unit(rng)}};
+    const double r = h * (2 + 20 * (unit(rng) + 1) / 2);
+    const double direction = M_PI * unit(rng);
+    const double magnitude = (1 / std::sqrt(t) + 1 / (2 * r)) * (0.8 + 0.4 * (unit(rng) + 1) / 2);
+    const std::array<double, 2> fitted{{magnitude * std::cos(direction), magnitude * std::sin(direction)}};
+    const auto result = expmap::internal::remove_cubic_leak(star, fitted, r, t);
+    // The fixed point by many plain steps, where they converge.
+    std::array<double, 2> g = fitted;
+    bool converged = false;
+    for (int step = 0; step < 500 && !converged; ++step) {
+      const auto next = leak_fixed_point_map(star, fitted, g, r, t);
+      converged = angle_between(g, next) < 1e-13 && std::isfinite(next[0]);
+      g = next;
+      if (!std::isfinite(g[0]) || !std::isfinite(g[1])) break;
+    }
+    BOOST_TEST_CONTEXT("trial " << trial << ", leak strength " << strength) {
+      const bool kept_fit = result == fitted;
+      if (converged) {
+        ++converging;
+        // A slow contraction may still be moving after the allowed steps and
+        // keep the fit; otherwise the result is the fixed point's direction.
+        if (!kept_fit) BOOST_TEST(angle_between(result, g) < 2e-2);
+        if (strength < 1e-3) BOOST_TEST(angle_between(result, g) < 1e-6);
+      } else {
+        ++swinging;
+        BOOST_TEST(kept_fit);
+      }
+    }
+  }
+  BOOST_TEST_MESSAGE("converging " << converging << ", not converging " << swinging);
+  // Both regimes are exercised.
+  BOOST_TEST(converging > 50);
+  BOOST_TEST(swinging > 20);
 }
 
 // The library's defaults on a jittered 10,242-vertex sphere: mean and

@@ -146,6 +146,16 @@ inline std::optional<Star_gradient> quadratic_fit_star_gradient(const Mesh_array
   return quadratic_fit_star_gradient(m, star_of(m, s), frame);
 }
 
+/// Steps of the fixed point in `remove_cubic_leak`.
+constexpr int max_leak_steps = 5;
+/// A step of `remove_cubic_leak` that turns the direction by less than this
+/// (rad) has settled: far below the estimator's own angle error (1e-4 and
+/// more on the accuracy study's surfaces).
+constexpr double leak_settled_turn = 1e-7;
+/// A last step of `remove_cubic_leak` that still turns the direction by more
+/// than this (rad) shows an iteration that swings or diverges.
+constexpr double leak_swinging_turn = 1e-2;
+
 /// The gradient g of log h at s from `fitted`, the quadratic fit's gradient
 /// of the heat h from a vertex at distance r divided by that heat at s.
 ///
@@ -157,22 +167,24 @@ inline std::optional<Star_gradient> quadratic_fit_star_gradient(const Mesh_array
 /// b = 1 / (2 r^2). A quadratic fit of h is exact up to second order; its
 /// response to the model's cubic Taylor terms, (g.x)^3 / 6 + (g.x) x^T Q x / 2,
 /// follows from `star.cubic_leak` and is subtracted, a fixed point in g
-/// found in a few steps. This is what the logarithmic fit achieves with one
+/// found in a few steps (where the steps do not settle, the fitted gradient
+/// is returned unchanged). This is what the logarithmic fit achieves with one
 /// solve per star vertex, from two solves (measured on spheres: the same
 /// mean angle error as `log_heat_quadratic_fit`).
 inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
                                                const std::array<double, 2>& fitted, double r,
                                                double time) {
-  const double root_t = std::sqrt(time);
+  // The Hessian model of the log heat from a vertex at distance r (see
+  // above): curvature a across the direction, b along it.
+  const double a = -(1 / std::sqrt(time) + 1 / (2 * r)) / r, b = 1 / (2 * r * r);
   std::array<double, 2> g = fitted;
-  for (int step = 0; step < 5; ++step) {
+  for (int step = 0; step < max_leak_steps; ++step) {
     // std::hypot costs as much as the rest of a step; its guard against
     // overflow is kept for squares that are not normal numbers.
     const double square = g[0] * g[0] + g[1] * g[1];
     const double length = std::isnormal(square) ? std::sqrt(square) : std::hypot(g[0], g[1]);
     if (!(length > 0) || !std::isfinite(length)) return fitted;
     const double nx = g[0] / length, ny = g[1] / length;
-    const double a = -(1 / root_t + 1 / (2 * r)) / r, b = 1 / (2 * r * r);
     const double qxx = a * (1 - nx * nx) + b * nx * nx, qxy = (b - a) * nx * ny,
                  qyy = a * (1 - ny * ny) + b * ny * ny;
     // Coefficients of x^3, x^2 y, x y^2, y^3.
@@ -186,7 +198,18 @@ inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
       leak_x += coefficient[k] * star.cubic_leak[k][0];
       leak_y += coefficient[k] * star.cubic_leak[k][1];
     }
-    g = {{fitted[0] - leak_x, fitted[1] - leak_y}};
+    const std::array<double, 2> next{{fitted[0] - leak_x, fitted[1] - leak_y}};
+    // Only the direction is used: it has settled when a step turns it by
+    // less than leak_settled_turn.
+    const double turn = g[0] * next[1] - g[1] * next[0], along = g[0] * next[0] + g[1] * next[1];
+    g = next;
+    if (along > 0 && std::abs(turn) <= leak_settled_turn * along) return g;
+    if (step + 1 == max_leak_steps && !(along > 0 && std::abs(turn) <= leak_swinging_turn * along))
+      // Still swinging: the model's cubic terms are too large for this star
+      // and distance (coarse meshes, far vertices), and the last step is an
+      // arbitrary direction (measured: up to pi from the fixed point on
+      // dino). The fitted gradient, leak and all, is the better estimate.
+      return fitted;
   }
   return g;
 }
