@@ -19,6 +19,7 @@
 #include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/Radix_sort.h>
 #include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
@@ -39,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numeric>
@@ -213,8 +215,11 @@ class Heat_exponential_map
     std::vector<int> candidates;       // vertices the heat is solved for
     std::size_t breadth_first_head = 0;  // where their breadth-first search can go on
     std::vector<int> region;           // the hottest candidates: where distance is integrated
-    std::vector<std::size_t> heat_row; // row of each region vertex in `heat`
-    std::vector<char> chosen;          // per candidate row: in the region
+    std::vector<std::size_t> heat_row; // row of each region vertex in `heat`, ascending
+    std::vector<std::size_t> rows;     // scratch for hottest_rows
+    std::vector<double> heat_values;   // scratch for hottest_rows
+    std::vector<int> region_by_index;  // the region in vertex order: walks per-vertex arrays in memory order
+    std::vector<int> sort_scratch;
     std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
     std::vector<double> heat;          // heat from the source on the candidates
@@ -370,8 +375,8 @@ class Heat_exponential_map
   internal::Localized_cholesky_solver::Workspace& source_heat_workspace(Workspace& ws) const {
     return m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
   }
-  // Orders ws.heat_row so that its first `kept` rows are the hottest
-  // candidates (the source among them), the region.
+  // Sets ws.heat_row to the `kept` hottest candidates (the source among
+  // them), the region, in candidate order.
   void choose_region(std::size_t kept, Workspace& ws) const;
   // Whether one of the `hottest` candidates lies on the candidates' edge:
   // the breadth-first candidates then cut the heat's level sets short on
@@ -383,12 +388,12 @@ class Heat_exponential_map
   // Steps 2 and 3: integrates the normalized heat gradient on the region
   // (fills ws.divergence and ws.potential, the distances).
   Solve_statistics integrate_distance(int s, Workspace& ws) const;
-  // Orders candidate rows by their heat from the source, hottest first.
-  static auto hotter(const Workspace& ws) {
-    return [&ws](std::size_t a, std::size_t b) {
-      return ws.heat[a] > ws.heat[b] || (ws.heat[a] == ws.heat[b] && a < b);
-    };
-  }
+  // The `count` rows of `rows` (ascending) with the most heat from the
+  // source, ties to the lower row, into `out` in ascending order. By the
+  // count-th largest heat value and one pass: a selection on the values
+  // themselves, not on rows compared through the heat array.
+  static void hottest_rows(const std::vector<std::size_t>& rows, std::size_t count,
+                           std::vector<std::size_t>& out, Workspace& ws);
   // Solves the heat from the source and its neighbours for the patch
   // vertices `ws.patch`: fills ws.star_heat.
   Solve_statistics solve_star_heat(const internal::Star_gradient& star, Workspace& ws) const;
@@ -501,6 +506,32 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::extend_source_heat(Workspace&
 }
 
 template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::hottest_rows(const std::vector<std::size_t>& rows,
+                                                    std::size_t count,
+                                                    std::vector<std::size_t>& out, Workspace& ws) {
+  out.clear();
+  if (count >= rows.size()) {
+    out.assign(rows.begin(), rows.end());
+    return;
+  }
+  if (count == 0) return;
+  ws.heat_values.resize(rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) ws.heat_values[i] = ws.heat[rows[i]];
+  const auto nth = ws.heat_values.begin() + static_cast<std::ptrdiff_t>(count - 1);
+  std::nth_element(ws.heat_values.begin(), nth, ws.heat_values.end(), std::greater<double>());
+  const double threshold = *nth;
+  // Rows hotter than the threshold all belong; of those at it, the lowest.
+  std::size_t at_threshold =
+      count - static_cast<std::size_t>(std::count_if(ws.heat_values.begin(), nth, [&](double h) {
+        return h > threshold;
+      }));
+  for (const std::size_t row : rows) {
+    const double h = ws.heat[row];
+    if (h > threshold || (h == threshold && at_threshold > 0 && at_threshold--)) out.push_back(row);
+  }
+}
+
+template <class TM, class VPM, class S>
 void Heat_exponential_map<TM, VPM, S>::choose_region(std::size_t kept, Workspace& ws) const {
   // The region the distance is integrated on: the candidates with the most
   // heat from the source. Heat level sets are near-geodesic circles, so the
@@ -508,30 +539,24 @@ void Heat_exponential_map<TM, VPM, S>::choose_region(std::size_t kept, Workspace
   // and shifts distances by a nearly constant amount, which the
   // normalization at the source removes. (A graph-distance region has
   // polygonal edges that bend the distance field instead.)
-  const std::size_t n_candidates = ws.candidates.size();
-  kept = std::min(kept, n_candidates);
-  ws.heat_row.resize(n_candidates);
-  std::iota(ws.heat_row.begin(), ws.heat_row.end(), std::size_t{0});
-  if (kept < n_candidates)
-    std::nth_element(ws.heat_row.begin(), ws.heat_row.begin() + static_cast<std::ptrdiff_t>(kept),
-                     ws.heat_row.end(), hotter(ws));
-  ws.heat_row.resize(kept);
+  ws.rows.resize(ws.candidates.size());
+  std::iota(ws.rows.begin(), ws.rows.end(), std::size_t{0});
+  hottest_rows(ws.rows, kept, ws.heat_row, ws);
   // The source leads the region (its heat is the largest, but a poor mesh
   // could break that tie; keep it regardless).
-  const auto source_row = std::find(ws.heat_row.begin(), ws.heat_row.end(), std::size_t{0});
-  if (source_row == ws.heat_row.end()) ws.heat_row.back() = 0;
+  if (!ws.heat_row.empty() && ws.heat_row.front() != 0) {
+    ws.heat_row.pop_back();
+    ws.heat_row.insert(ws.heat_row.begin(), 0);
+  }
 }
 
 template <class TM, class VPM, class S>
 bool Heat_exponential_map<TM, VPM, S>::region_is_cut_short(std::size_t hottest,
                                                            Workspace& ws) const {
-  hottest = std::min(hottest, ws.heat_row.size());
-  if (hottest < ws.heat_row.size())
-    std::nth_element(ws.heat_row.begin(), ws.heat_row.begin() + static_cast<std::ptrdiff_t>(hottest),
-                     ws.heat_row.end(), hotter(ws));
+  hottest_rows(ws.heat_row, hottest, ws.rows, ws);
   const auto& m = m_indexed.arrays;
-  for (std::size_t i = 0; i < hottest; ++i) {
-    const int v = ws.candidates[ws.heat_row[i]];
+  for (const std::size_t row : ws.rows) {
+    const int v = ws.candidates[row];
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
       if (!ws.in_region.is_marked(m.neighbor[p])) return true;
   }
@@ -540,14 +565,8 @@ bool Heat_exponential_map<TM, VPM, S>::region_is_cut_short(std::size_t hottest,
 
 template <class TM, class VPM, class S>
 void Heat_exponential_map<TM, VPM, S>::mark_region(Workspace& ws) const {
-  // The chosen rows in candidate order (the source first), by one pass over
-  // the candidates instead of a sort.
+  // ws.heat_row is in candidate order, the source first.
   const std::size_t kept = ws.heat_row.size();
-  ws.chosen.assign(ws.candidates.size(), 0);
-  for (std::size_t row : ws.heat_row) ws.chosen[row] = 1;
-  ws.heat_row.clear();
-  for (std::size_t row = 0; row < ws.chosen.size(); ++row)
-    if (ws.chosen[row]) ws.heat_row.push_back(row);
   ws.region.resize(kept);
   ws.region_heat.resize(kept);
   ws.in_region.next_query();
@@ -556,6 +575,11 @@ void Heat_exponential_map<TM, VPM, S>::mark_region(Workspace& ws) const {
     ws.region_heat[i] = ws.heat[ws.heat_row[i]];
     ws.in_region.mark(ws.region[i], static_cast<int>(i));
   }
+  // The loops over the region's faces and neighbours read per-vertex arrays;
+  // in vertex order (which follows the surface, see locality_order) they
+  // stream through memory instead of jumping between breadth-first rings.
+  ws.region_by_index.assign(ws.region.begin(), ws.region.end());
+  internal::radix_sort_indices(ws.region_by_index, ws.sort_scratch);
 }
 
 template <class TM, class VPM, class S>
@@ -565,8 +589,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::integrate_distance(int s, Wor
   // Step 2: divergence of the normalized heat gradient, from the faces whose
   // three corners lie in the region (so the right-hand side sums to zero).
   ws.divergence.assign(kept, 0.0);
-  for (std::size_t i = 0; i < kept; ++i) {
-    const int v = ws.region[i];
+  for (const int v : ws.region_by_index) {
     for (auto f = m_faces.begin(v); f != m_faces.end(v); ++f) {
       const auto& c = f->corner;
       if (!ws.in_region.is_marked(c[0]) || !ws.in_region.is_marked(c[1]) ||
@@ -745,11 +768,10 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
 template <class TM, class VPM, class S>
 double Heat_exponential_map<TM, VPM, S>::boundary_distance(const Workspace& ws) const {
   double boundary = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < ws.region.size(); ++i) {
-    const int v = ws.region[i];
+  for (const int v : ws.region_by_index) {
     for (int p = m_indexed.arrays.neighbor_start[v]; p < m_indexed.arrays.neighbor_start[v + 1]; ++p)
       if (!ws.in_region.is_marked(m_indexed.arrays.neighbor[p])) {
-        boundary = std::min(boundary, ws.potential[i]);
+        boundary = std::min(boundary, ws.potential[static_cast<std::size_t>(ws.in_region.value(v))]);
         break;
       }
   }
@@ -769,20 +791,31 @@ std::vector<std::size_t> Heat_exponential_map<TM, VPM, S>::select_patch(
     order.resize(ws.region.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
   }
-  auto nearer = [&](std::size_t a, std::size_t b) {
-    return ws.potential[a] < ws.potential[b] ||
-           (ws.potential[a] == ws.potential[b] && ws.region[a] < ws.region[b]);
-  };
-  if (patch.kind() == Patch::Kind::geodesic_radius) {
+  if (patch.kind() == Patch::Kind::geodesic_radius)
     order.erase(std::remove_if(order.begin(), order.end(),
                                [&](std::size_t i) { return ws.potential[i] > patch.radius(); }),
                 order.end());
-  } else if (patch.kind() != Patch::Kind::vertex_set && order.size() > target) {
-    std::nth_element(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(target),
-                     order.end(), nearer);
-    order.resize(target);
+  // Sorted by distance, ties by vertex, with both keys side by side (a
+  // comparison through the region's arrays costs two cache misses).
+  struct Key {
+    double distance;
+    int vertex;
+    std::size_t position;
+    bool operator<(const Key& other) const {
+      return distance < other.distance || (distance == other.distance && vertex < other.vertex);
+    }
+  };
+  std::vector<Key> keys(order.size());
+  for (std::size_t k = 0; k < order.size(); ++k)
+    keys[k] = {ws.potential[order[k]], ws.region[order[k]], order[k]};
+  if (patch.kind() != Patch::Kind::geodesic_radius && patch.kind() != Patch::Kind::vertex_set &&
+      keys.size() > target) {
+    std::nth_element(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(target), keys.end());
+    keys.resize(target);
   }
-  std::sort(order.begin(), order.end(), nearer);
+  std::sort(keys.begin(), keys.end());
+  order.resize(keys.size());
+  for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].position;
   return order;
 }
 

@@ -24,26 +24,29 @@ namespace internal {
 /// A face where u is constant contributes nothing.
 inline std::array<double, 3> normalized_gradient_divergence(const Triangle_shape& shape,
                                                             std::array<double, 3> u) {
-  // Heat decays exponentially: rescale per face so the gradient of a far,
-  // tiny-valued face does not underflow (its direction is all we need).
-  const double largest = std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
-  if (!(largest > 0) || !std::isfinite(largest)) return {{0, 0, 0}};
-  for (double& value : u) value /= largest;
   const double x1 = shape.layout[0], x2 = shape.layout[1], y2 = shape.layout[2];
   const std::array<std::array<double, 2>, 3> p{{{{0.0, 0.0}}, {{x1, 0.0}}, {{x2, y2}}}};
-  // grad u = 1/(2A) sum_k u_k rot90(p_{k+2} - p_{k+1}); the 1/(2A) factor
-  // cancels in the normalization.
-  double gx = 0, gy = 0;
-  for (int k = 0; k < 3; ++k) {
-    const auto& a = p[(k + 1) % 3];
-    const auto& b = p[(k + 2) % 3];
-    gx += u[k] * -(b[1] - a[1]);
-    gy += u[k] * (b[0] - a[0]);
+  // grad u = 1/(2A) sum_k u_k rot90(p_{k+2} - p_{k+1}) with the corners at
+  // (0, 0), (x1, 0), (x2, y2); the 1/(2A) factor cancels in the
+  // normalization.
+  auto unnormalized_gradient = [&](const std::array<double, 3>& v) {
+    return std::array<double, 2>{{y2 * (v[1] - v[0]), v[0] * (x2 - x1) - v[1] * x2 + v[2] * x1}};
+  };
+  std::array<double, 2> grad = unnormalized_gradient(u);
+  double square = grad[0] * grad[0] + grad[1] * grad[1];
+  if (!std::isnormal(square)) {
+    // Heat decays exponentially: the square of a far, tiny-valued face's
+    // gradient underflows (or a huge one overflows). Rescaled by the
+    // largest value, only its direction is kept, which is all we need.
+    const double largest = std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
+    if (!(largest > 0) || !std::isfinite(largest)) return {{0, 0, 0}};
+    for (double& value : u) value /= largest;
+    grad = unnormalized_gradient(u);
+    square = grad[0] * grad[0] + grad[1] * grad[1];
+    if (!(square > 0) || !std::isfinite(square)) return {{0, 0, 0}};
   }
-  const double g = std::sqrt(gx * gx + gy * gy);
-  if (!(g > 0)) return {{0, 0, 0}};
-  gx /= g;
-  gy /= g;
+  const double inverse_length = 1.0 / std::sqrt(square);
+  const double gx = grad[0] * inverse_length, gy = grad[1] * inverse_length;
   std::array<double, 3> div;
   for (int a = 0; a < 3; ++a) {
     const int b = (a + 1) % 3, c = (a + 2) % 3;
