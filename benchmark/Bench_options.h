@@ -39,6 +39,9 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --full-sources N         heat-full uses only the first N of them (default:
                            all); its time does not depend on the fraction
   --seed S                 std::mt19937 seed of the sources (default 1)
+  --repeats K              each query is run K times and its fastest run
+                           kept (default 3); the methods take turns per
+                           source, so a change of load hits them alike
   --time-factor M          Heat_options::time_factor (default: the library's)
   --csv OUT                one row per mesh, method and fraction
   --stats CSV2             one row per mesh: precompute time, peak memory,
@@ -63,6 +66,7 @@ struct Bench_options {
   std::size_t sources = 20;
   std::size_t full_sources = 0;  // 0: all
   unsigned seed = 1;
+  std::size_t repeats = 3;
   double time_factor = 0;  // 0: the library's default
   std::string csv, stats, detail;
   bool help = false;
@@ -138,6 +142,9 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
       if (o.sources == 0) throw Usage_error("--sources must be at least 1");
     } else if (arg == "--full-sources") {
       o.full_sources = parse_count(arg, value);
+    } else if (arg == "--repeats") {
+      o.repeats = parse_count(arg, value);
+      if (o.repeats == 0) throw Usage_error("--repeats must be at least 1");
     } else if (arg == "--seed") {
       o.seed = static_cast<unsigned>(parse_count(arg, value));
     } else if (arg == "--time-factor") {

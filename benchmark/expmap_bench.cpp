@@ -8,11 +8,15 @@
 //
 // Per mesh: load it; precompute the heat method (Heat_exponential_map) and
 // read the peak memory right after; pick --sources random vertices
-// (std::mt19937(seed), the same for every method); then per method one
-// untimed warm-up query (first source, first fraction) and one query per
-// fraction and source, Patch::fraction(f), timed with steady_clock around
-// compute_by_index() alone. Baselines (dem, dgpc, exact) are constructed
-// just before their queries and get the same patches.
+// (std::mt19937(seed), the same for every method); construct the baselines
+// (dem, dgpc, exact); then one untimed warm-up query per method (first
+// source, first fraction) and, per fraction and source, Patch::fraction(f)
+// from every method in turn (the order rotates from source to source), each
+// query --repeats times (default 3) and its fastest run kept, timed with
+// steady_clock around compute_by_index() alone. On a shared machine whose
+// load drifts, taking turns makes a slow stretch hit every method alike, and
+// the fastest of the repeats drops interruptions; medians over the sources
+// are then medians of these per-source times.
 //
 // heat-full is the whole-mesh cost: Heat_options::region_growth cannot turn
 // the localization off, so the same object is queried with
@@ -195,36 +199,61 @@ std::vector<std::size_t> pick_sources(const Mesh& mesh, std::size_t count, unsig
   return usable;
 }
 
-/// Times `compute_by_index` for every fraction and source after one
-/// untimed warm-up query.
-template <class Method>
-std::vector<Query_record> time_queries(const std::string& method_name, const Method& method,
-                                       const std::vector<std::size_t>& sources,
-                                       const std::vector<double>& fractions) {
-  std::vector<Query_record> records;
-  try {
-    (void)method.compute_by_index(sources.front(), expmap::Patch::fraction(fractions.front()));
-  } catch (const std::exception& e) {
-    std::cerr << "  warning: " << method_name << " warm-up query failed: " << e.what() << "\n";
+/// A method whose queries take turns with the others' in `time_interleaved`.
+struct Query_method {
+  std::string name;
+  std::function<expmap::Local_map<Mesh::Vertex_index>(std::size_t, const expmap::Patch&)> query;
+};
+
+/// Times every method's `compute_by_index` for every fraction and source
+/// after one untimed warm-up query each: per fraction and source the methods
+/// take turns (starting with a different one from source to source), each
+/// query is run `repeats` times, and the fastest run is kept.
+std::vector<Query_record> time_interleaved(const std::vector<Query_method>& methods,
+                                           const std::vector<std::size_t>& sources,
+                                           const std::vector<double>& fractions,
+                                           std::size_t repeats) {
+  for (const Query_method& method : methods) {
+    try {
+      (void)method.query(sources.front(), expmap::Patch::fraction(fractions.front()));
+    } catch (const std::exception& e) {
+      std::cerr << "  warning: " << method.name << " warm-up query failed: " << e.what() << "\n";
+    }
   }
+  std::vector<Query_record> records;
   for (double f : fractions) {
     const expmap::Patch patch = expmap::Patch::fraction(f);
-    for (std::size_t s : sources) {
-      Query_record r;
-      r.method = method_name;
-      r.fraction = f;
-      r.source = s;
-      try {
-        Stopwatch watch;
-        const auto map = method.compute_by_index(s, patch);
-        r.ms = watch.milliseconds();
-        r.patch_vertices = map.size();
-        r.statistics = map.statistics;
-      } catch (const std::exception& e) {
-        std::cerr << "  warning: " << method_name << " fraction " << f << " source " << s
-                  << " failed: " << e.what() << "\n";
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      std::vector<Query_record> turn(methods.size());
+      for (std::size_t k = 0; k < methods.size(); ++k) {
+        turn[k].method = methods[k].name;
+        turn[k].fraction = f;
+        turn[k].source = sources[i];
       }
-      records.push_back(r);
+      std::vector<bool> failed(methods.size(), false);
+      for (std::size_t repeat = 0; repeat < repeats; ++repeat) {
+        for (std::size_t j = 0; j < methods.size(); ++j) {
+          const std::size_t k = (i + repeat + j) % methods.size();
+          if (failed[k]) continue;
+          Query_record& r = turn[k];
+          try {
+            Stopwatch watch;
+            const auto map = methods[k].query(sources[i], patch);
+            const double ms = watch.milliseconds();
+            if (std::isnan(r.ms) || ms < r.ms) {
+              r.ms = ms;
+              r.patch_vertices = map.size();
+              r.statistics = map.statistics;
+            }
+          } catch (const std::exception& e) {
+            std::cerr << "  warning: " << methods[k].name << " fraction " << f << " source "
+                      << sources[i] << " failed: " << e.what() << "\n";
+            failed[k] = true;
+            r.ms = nan_value;
+          }
+        }
+      }
+      records.insert(records.end(), turn.begin(), turn.end());
     }
   }
   return records;
@@ -262,14 +291,18 @@ std::vector<Query_record> time_full_queries(const Heat& heat,
   return records;
 }
 
-/// Measures the stream floor of every heat query (after all queries were
+/// Measures the stream floor of every query of `method` (after all queries were
 /// timed, so the floor's buffers do not disturb the queries' caches).
-void measure_stream_floors(std::vector<Query_record>& records, Stream_floor& floor) {
+void measure_stream_floors(std::vector<Query_record>& records, const std::string& method,
+                           Stream_floor& floor) {
   std::size_t largest = 0;
-  for (const auto& r : records) largest = std::max(largest, r.statistics.factor_entries);
+  for (const auto& r : records)
+    if (r.method == method) largest = std::max(largest, r.statistics.factor_entries);
+  if (largest == 0) return;
   floor.prepare(largest);
   for (auto& r : records)
-    if (!std::isnan(r.ms)) r.floor_ms = floor.measure_ms(r.statistics.factor_entries);
+    if (r.method == method && !std::isnan(r.ms))
+      r.floor_ms = floor.measure_ms(r.statistics.factor_entries);
 }
 
 /// Summarizes the successful records among `records` into a row.
@@ -390,32 +423,53 @@ class Benchmark {
     std::vector<Query_record> records;
     std::vector<Summary_row> rows;
     Stream_floor floor;
+    // The per-fraction methods take turns (time_interleaved); the baselines
+    // are constructed first. heat-full runs on its own afterwards: its time
+    // does not depend on the fraction.
+    std::unique_ptr<Dem> dem;
+    std::unique_ptr<Dgpc> dgpc;
+    std::unique_ptr<Exact> exact;
+    std::vector<Query_method> turns;
     for (const std::string& method : m_options.methods) {
-      Stopwatch method_watch;
-      std::vector<Query_record> r;
       if (method == "heat") {
-        r = time_queries(method, *heat, sources, m_options.fractions);
-        measure_stream_floors(r, floor);
-      } else if (method == "heat-full") {
-        const std::size_t count =
-            m_options.full_sources > 0 ? m_options.full_sources : sources.size();
-        r = time_full_queries(*heat, sources, count);
-        measure_stream_floors(r, floor);
+        turns.push_back(query_method(method, *heat));
       } else if (method == "dem") {
-        r = run_baseline<Dem>(method, mesh, sources);
+        dem = construct_baseline<Dem>(method, mesh);
+        turns.push_back(query_method(method, *dem));
       } else if (method == "dgpc") {
-        r = run_baseline<Dgpc>(method, mesh, sources);
+        dgpc = construct_baseline<Dgpc>(method, mesh);
+        turns.push_back(query_method(method, *dgpc));
       } else if (method == "exact") {
         const std::size_t largest = expmap::Patch::fraction(*std::max_element(
             m_options.fractions.begin(), m_options.fractions.end())).target_count(n);
         if (largest > exact_slow_patch)
           std::cerr << "  warning: exact is slow for big patches (up to " << largest
                     << " vertices here; expect up to seconds per query, minutes on 100k-vertex patches)\n";
-        r = run_baseline<Exact>(method, mesh, sources);
+        exact = construct_baseline<Exact>(method, mesh);
+        turns.push_back(query_method(method, *exact));
       }
+    }
+    if (!turns.empty()) {
+      Stopwatch watch;
+      std::vector<Query_record> r =
+          time_interleaved(turns, sources, m_options.fractions, m_options.repeats);
+      measure_stream_floors(r, "heat", floor);
       floor.release();
-      std::cout << "  " << method << ": " << r.size() << " queries in "
-                << fixed(method_watch.seconds(), 1) << " s\n"
+      std::cout << "  ";
+      for (std::size_t k = 0; k < turns.size(); ++k) std::cout << (k ? ", " : "") << turns[k].name;
+      std::cout << ": " << r.size() << " queries, each the fastest of " << m_options.repeats
+                << ", in " << fixed(watch.seconds(), 1) << " s\n"
+                << std::flush;
+      records.insert(records.end(), r.begin(), r.end());
+    }
+    if (std::count(m_options.methods.begin(), m_options.methods.end(), "heat-full") > 0) {
+      Stopwatch watch;
+      const std::size_t count = m_options.full_sources > 0 ? m_options.full_sources : sources.size();
+      std::vector<Query_record> r = time_full_queries(*heat, sources, count);
+      measure_stream_floors(r, "heat-full", floor);
+      floor.release();
+      std::cout << "  heat-full: " << r.size() << " queries in " << fixed(watch.seconds(), 1)
+                << " s\n"
                 << std::flush;
       records.insert(records.end(), r.begin(), r.end());
     }
@@ -449,12 +503,18 @@ class Benchmark {
   }
 
   template <class Method>
-  std::vector<Query_record> run_baseline(const std::string& name, const Mesh& mesh,
-                                         const std::vector<std::size_t>& sources) {
+  static std::unique_ptr<Method> construct_baseline(const std::string& name, const Mesh& mesh) {
     Stopwatch watch;
-    const Method method(mesh);
+    auto method = std::make_unique<Method>(mesh);
     std::cout << "  " << name << " precompute " << fixed(watch.seconds(), 2) << " s\n";
-    return time_queries(name, method, sources, m_options.fractions);
+    return method;
+  }
+
+  template <class Method>
+  static Query_method query_method(const std::string& name, const Method& method) {
+    return {name, [&method](std::size_t source, const expmap::Patch& patch) {
+              return method.compute_by_index(source, patch);
+            }};
   }
 
   const Summary_row* find_row(const std::string& mesh, const std::string& method,
@@ -680,7 +740,8 @@ int main(int argc, char** argv) {
     for (const auto& m : options.methods) std::cout << " " << m;
     std::cout << "; fractions";
     for (double f : options.fractions) std::cout << " " << f;
-    std::cout << "; " << options.sources << " sources (seed " << options.seed << ")";
+    std::cout << "; " << options.sources << " sources (seed " << options.seed
+              << "), each query the fastest of " << options.repeats << " runs, methods taking turns";
     if (options.full_sources > 0)
       std::cout << ", heat-full on the first " << options.full_sources;
     std::cout << "\n";

@@ -18,6 +18,8 @@
 #
 # Environment:
 #   EXPMAP_BENCH_SOURCES=N       sources per mesh (default 20)
+#   EXPMAP_BENCH_REPEATS=K       runs per query, the fastest kept (default 3;
+#                                the methods take turns per source)
 #   EXPMAP_BENCH_FULL_SOURCES=N  sources for heat-full, the whole-mesh query
 #                                (default 20; about 1 s each on elephant_loop2)
 #   EXPMAP_BENCH_EXACT=1         also time the exact method, in a second run
@@ -53,6 +55,7 @@ bench=build/benchmark/expmap-bench
 
 fractions=0.01,0.02,0.05,0.1,0.25
 sources=${EXPMAP_BENCH_SOURCES:-20}
+repeats=${EXPMAP_BENCH_REPEATS:-3}
 full_sources=${EXPMAP_BENCH_FULL_SOURCES:-20}
 out=doc/benchmark
 mkdir -p "$out"
@@ -62,7 +65,7 @@ mkdir -p "$out"
   --mesh data/meshes/refined_elephant.off \
   --subdivide-elephant 2 --cache-dir build/meshes \
   --methods heat,heat-full,dem,dgpc --fractions "$fractions" \
-  --sources "$sources" --full-sources "$full_sources" --seed 1 \
+  --sources "$sources" --full-sources "$full_sources" --seed 1 --repeats "$repeats" \
   --csv "$out/queries.csv" --stats "$out/meshes.csv" --detail "$out/detail.csv" \
   | tee "$out/output.txt"
 
@@ -71,7 +74,7 @@ if [ "${EXPMAP_BENCH_EXACT:-0}" = 1 ]; then
   "$bench" --mesh data/meshes/armadillo.off --mesh data/meshes/bunny00.off \
     --mesh data/meshes/refined_elephant.off \
     --methods exact --fractions "$fractions" \
-    --sources "${EXPMAP_BENCH_EXACT_SOURCES:-5}" --seed 1 \
+    --sources "${EXPMAP_BENCH_EXACT_SOURCES:-5}" --seed 1 --repeats 1 \
     --csv "$out/exact.csv" --detail "$out/exact_detail.csv" \
     | tee "$out/exact_output.txt"
   csvs+=("$out/exact.csv")
