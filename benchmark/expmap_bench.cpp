@@ -25,7 +25,8 @@
 // for any patch. Its time does not depend on the fraction; its rows repeat
 // it for each fraction with that fraction's patch size, so heat-full / heat
 // at a fraction is the speedup of localization. --full-sources N times it
-// from the first N sources only.
+// from the first N sources only; each of its queries is also the fastest of
+// --repeats runs.
 //
 // --csv (one row per mesh, method, fraction):
 //   mesh, vertices            mesh name (file stem) and vertex count
@@ -260,10 +261,11 @@ std::vector<Query_record> time_interleaved(const std::vector<Query_method>& meth
 }
 
 /// heat-full: the same object queried for the whole component
-/// (Patch::fraction(1)), i.e. solving over the whole mesh.
+/// (Patch::fraction(1)), i.e. solving over the whole mesh; each query the
+/// fastest of `repeats` runs, as the localized queries.
 std::vector<Query_record> time_full_queries(const Heat& heat,
                                             const std::vector<std::size_t>& sources,
-                                            std::size_t count) {
+                                            std::size_t count, std::size_t repeats) {
   std::vector<Query_record> records;
   const expmap::Patch whole = expmap::Patch::fraction(1.0);
   try {
@@ -276,15 +278,22 @@ std::vector<Query_record> time_full_queries(const Heat& heat,
     r.method = "heat-full";
     r.fraction = 1.0;
     r.source = sources[i];
-    try {
-      Stopwatch watch;
-      const auto map = heat.compute_by_index(sources[i], whole);
-      r.ms = watch.milliseconds();
-      r.patch_vertices = map.size();
-      r.statistics = map.statistics;
-    } catch (const std::exception& e) {
-      std::cerr << "  warning: heat-full source " << sources[i] << " failed: " << e.what()
-                << "\n";
+    for (std::size_t repeat = 0; repeat < repeats; ++repeat) {
+      try {
+        Stopwatch watch;
+        const auto map = heat.compute_by_index(sources[i], whole);
+        const double ms = watch.milliseconds();
+        if (std::isnan(r.ms) || ms < r.ms) {
+          r.ms = ms;
+          r.patch_vertices = map.size();
+          r.statistics = map.statistics;
+        }
+      } catch (const std::exception& e) {
+        std::cerr << "  warning: heat-full source " << sources[i] << " failed: " << e.what()
+                  << "\n";
+        r.ms = nan_value;
+        break;
+      }
     }
     records.push_back(r);
   }
@@ -465,11 +474,11 @@ class Benchmark {
     if (std::count(m_options.methods.begin(), m_options.methods.end(), "heat-full") > 0) {
       Stopwatch watch;
       const std::size_t count = m_options.full_sources > 0 ? m_options.full_sources : sources.size();
-      std::vector<Query_record> r = time_full_queries(*heat, sources, count);
+      std::vector<Query_record> r = time_full_queries(*heat, sources, count, m_options.repeats);
       measure_stream_floors(r, "heat-full", floor);
       floor.release();
-      std::cout << "  heat-full: " << r.size() << " queries in " << fixed(watch.seconds(), 1)
-                << " s\n"
+      std::cout << "  heat-full: " << r.size() << " queries, each the fastest of "
+                << m_options.repeats << ", in " << fixed(watch.seconds(), 1) << " s\n"
                 << std::flush;
       records.insert(records.end(), r.begin(), r.end());
     }

@@ -29,8 +29,9 @@
 #                                elephant_loop2 a 25% patch would take hours):
 #                                doc/benchmark/exact.csv, merged into the plots
 #
-# Time on 2 cores: about 3 minutes of benchmark (elephant_loop2 dominates:
-# 25 s precompute, ~1.4 s of heat queries and ~1 s of heat-full per source),
+# Time on 2 cores: about 4 minutes of benchmark with 3 runs per query
+# (elephant_loop2 dominates: 12-25 s precompute, then per source and run
+# ~0.4 s of heat, dem and dgpc queries and ~0.9 s of heat-full),
 # plus the build (~2 minutes) and, on a fresh machine, the installs.
 # Run it on a quiet machine: the timings are wall-clock.
 set -euo pipefail
