@@ -43,8 +43,9 @@ Cutoff_error cutoff_error(const Heat& heat, std::size_t source, double fraction)
 }
 
 template <class Heat>
-void check_cutoff(const Heat& heat, const char* name, std::initializer_list<std::size_t> sources) {
-  for (double fraction : {0.05, 0.25})
+void check_cutoff(const Heat& heat, const char* name, std::initializer_list<std::size_t> sources,
+                  std::initializer_list<double> fractions = {0.05, 0.25}) {
+  for (double fraction : fractions)
     for (std::size_t source : sources) {
       const Cutoff_error e = cutoff_error(heat, source, fraction);
       BOOST_TEST_MESSAGE(name << " source " << source << ", " << fraction * 100
@@ -72,6 +73,18 @@ BOOST_AUTO_TEST_CASE(refined_elephant_cutoff_error_with_widened_candidates) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("refined_elephant.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "refined_elephant", {44339, 21024, 9731});
+}
+
+// The patches of these sources come closer to their region's edge than the
+// margin at the first attempt (measured: 1% for 160 and 23227, 5% for 3984
+// and 10228), and the query retries on a region twice as large. A retry
+// grown only by the margin it missed (1.25x to 1.4x here) meets the margin
+// too, but fails this test: source 23227's error rose from 0.74% to 1.26%.
+BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
+  const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
+  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  check_cutoff(heat, "armadillo", {160, 23227}, {0.01});
+  check_cutoff(heat, "armadillo", {3984, 10228}, {0.05});
 }
 
 BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
