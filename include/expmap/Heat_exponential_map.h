@@ -220,6 +220,8 @@ class Heat_exponential_map
     std::vector<double> heat_values;   // scratch for hottest_rows
     std::vector<int> region_by_index;  // the region in vertex order: walks per-vertex arrays in memory order
     std::vector<int> sort_scratch;
+    std::vector<int> cut_short_at;     // hottest candidates on the candidates' edge
+    std::vector<int> frontier, next_frontier;  // scratch for grow_rings_around
     std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
     std::vector<double> heat;          // heat from the source on the candidates
@@ -355,6 +357,13 @@ class Heat_exponential_map
   // Candidates per region vertex when the first candidates cut the region
   // short (see `region_is_cut_short`).
   static constexpr double widened_candidate_excess = 2.5;
+  static constexpr int targeted_widening_rounds = 3;
+  // Rings added around the cut-short vertices per round: a fifth of the
+  // patch's radius in edge hops (a disk of n vertices on a regular
+  // triangulation has a radius of about sqrt(n / 3) hops).
+  static int targeted_widening_rings(std::size_t target) {
+    return std::max(2, static_cast<int>(std::ceil(0.2 * std::sqrt(static_cast<double>(target) / 3))));
+  }
 
   // Breadth-first candidates for a patch of `target` vertices `growth` times
   // larger, `excess` times as many.
@@ -378,11 +387,23 @@ class Heat_exponential_map
   // Sets ws.heat_row to the `kept` hottest candidates (the source among
   // them), the region, in candidate order.
   void choose_region(std::size_t kept, Workspace& ws) const;
-  // Whether one of the `hottest` candidates lies on the candidates' edge:
+  // Whether one of the `hottest` candidates lies on the candidates' edge
+  // (those that do are left in ws.cut_short_at):
   // the breadth-first candidates then cut the heat's level sets short on
   // that side, and a patch of `hottest` vertices would come too close to the
   // region's edge. Needs the candidates marked and `choose_region` done.
   bool region_is_cut_short(std::size_t hottest, Workspace& ws) const;
+  // The candidates at `rows` with a neighbour outside the candidates, into
+  // ws.cut_short_at.
+  void edge_of_candidates(const std::vector<std::size_t>& rows, Workspace& ws) const;
+  // Step 4 for a region cut short: grows the candidates where the region
+  // touches their edge (at most targeted_widening_rounds rounds of
+  // rings), else everywhere to widened_candidate_excess times the region;
+  // extends the source heat and chooses the region (of `kept` vertices)
+  // again each time.
+  Solve_statistics widen_candidates(std::size_t target, double growth, std::size_t kept,
+                                    std::size_t component, bool& whole_component,
+                                    Workspace& ws) const;
   // Marks the chosen region and fills ws.region and ws.region_heat.
   void mark_region(Workspace& ws) const;
   // Steps 2 and 3: integrates the normalized heat gradient on the region
@@ -554,13 +575,57 @@ template <class TM, class VPM, class S>
 bool Heat_exponential_map<TM, VPM, S>::region_is_cut_short(std::size_t hottest,
                                                            Workspace& ws) const {
   hottest_rows(ws.heat_row, hottest, ws.rows, ws);
+  edge_of_candidates(ws.rows, ws);
+  return !ws.cut_short_at.empty();
+}
+
+template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::edge_of_candidates(const std::vector<std::size_t>& rows,
+                                                          Workspace& ws) const {
   const auto& m = m_indexed.arrays;
-  for (const std::size_t row : ws.rows) {
+  ws.cut_short_at.clear();
+  for (const std::size_t row : rows) {
     const int v = ws.candidates[row];
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
-      if (!ws.in_region.is_marked(m.neighbor[p])) return true;
+      if (!ws.in_region.is_marked(m.neighbor[p])) {
+        ws.cut_short_at.push_back(v);
+        break;
+      }
   }
-  return false;
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::widen_candidates(std::size_t target,
+                                                                    double growth, std::size_t kept,
+                                                                    std::size_t component,
+                                                                    bool& whole_component,
+                                                                    Workspace& ws) const {
+  Solve_statistics stats;
+  auto take_new_candidates = [&] {
+    whole_component = ws.candidates.size() == component;
+    stats += extend_source_heat(ws);
+    choose_region(whole_component ? ws.candidates.size() : kept, ws);
+  };
+  // Rings around the region's vertices on the candidates' edge, on that
+  // side only, until the region is clear of the edge.
+  for (int round = 0; round < targeted_widening_rounds && !whole_component; ++round) {
+    edge_of_candidates(ws.heat_row, ws);
+    if (ws.cut_short_at.empty()) return stats;
+    internal::grow_rings_around(m_indexed.arrays, ws.in_region, ws.cut_short_at,
+                                targeted_widening_rings(target), ws.candidates, ws.frontier,
+                                ws.next_frontier);
+    take_new_candidates();
+  }
+  if (whole_component) return stats;
+  edge_of_candidates(ws.heat_row, ws);
+  if (ws.cut_short_at.empty()) return stats;
+  // Still on the edge (a mesh much finer one way than the other): the
+  // breadth-first search continued everywhere.
+  ws.breadth_first_head = internal::continue_region_by_hops(
+      m_indexed.arrays, ws.in_region, breadth_first_budget(target, growth, widened_candidate_excess),
+      ws.candidates, ws.breadth_first_head);
+  take_new_candidates();
+  return stats;
 }
 
 template <class TM, class VPM, class S>
@@ -718,8 +783,9 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   // heat's level sets short on the side of the short edges. That is checked
   // on the heat, before the distance is integrated: the hottest candidates,
   // as many as a disk `margin` times the patch's radius holds, must not
-  // touch the candidates' edge. Otherwise the candidates are widened (the
-  // region keeps its size), which costs the back substitution of the new
+  // touch the candidates' edge. Otherwise the candidates grow where the
+  // region touches their edge (or, failing that, everywhere; the region
+  // keeps its size), which costs the back substitution of the new
   // candidates only; a retry after the distance costs a whole query.
   const bool breadth_first = patch.kind() == Patch::Kind::fraction ||
                              patch.kind() == Patch::Kind::vertex_count;
@@ -736,15 +802,8 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
                         : static_cast<std::size_t>(std::ceil(
                               static_cast<double>(ws->candidates.size()) / candidate_excess));
     choose_region(kept, *ws);
-    if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws)) {
-      ws->breadth_first_head = internal::continue_region_by_hops(
-          m_indexed.arrays, ws->in_region,
-          breadth_first_budget(target, growth, widened_candidate_excess), ws->candidates,
-          ws->breadth_first_head);
-      whole_component = ws->candidates.size() == component;
-      result.statistics += extend_source_heat(*ws);
-      choose_region(whole_component ? ws->candidates.size() : kept, *ws);
-    }
+    if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws))
+      result.statistics += widen_candidates(target, growth, kept, component, whole_component, *ws);
     mark_region(*ws);
     result.statistics += integrate_distance(s, *ws);
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);

@@ -67,8 +67,9 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error) {
 }
 
 // Edge lengths vary on this mesh, and the breadth-first candidates of these
-// sources cut the heat's level sets short at 5%: their queries widen the
-// candidates and extend the source heat to them (step 4 of the manual).
+// sources cut the heat's level sets short at 5%: their queries grow the
+// candidates around the cut-short vertices and extend the source heat to
+// them (step 4 of the manual).
 BOOST_AUTO_TEST_CASE(refined_elephant_cutoff_error_with_widened_candidates) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("refined_elephant.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
@@ -85,6 +86,19 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "armadillo", {160, 23227}, {0.01});
   check_cutoff(heat, "armadillo", {3984, 10228}, {0.05});
+}
+
+// A grid ten times finer across than along: the breadth-first candidates
+// are far too short across, the rings grown around the cut-short vertices
+// do not catch up within their rounds, and the candidates are widened
+// everywhere (then the margin retry follows). The targeted rings on the
+// meshes above never reach that fallback.
+BOOST_AUTO_TEST_CASE(anisotropic_grid_cutoff_error_after_widening_everywhere) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(expmap::make_grid(60, 600, 1.0, 1.0), mesh);
+  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  const std::size_t n = num_vertices(mesh);
+  check_cutoff(heat, "anisotropic grid", {n / 2 + 3, n / 3 + 7}, {0.05});
 }
 
 BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {

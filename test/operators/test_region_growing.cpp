@@ -4,7 +4,8 @@
 // Breadth-first candidate search: a search continued from where it reached
 // a smaller budget must find the vertices of a fresh search with the larger
 // budget, in the same order, and that order must be by edge hops (checked
-// against a plain std::queue search).
+// against a plain std::queue search); rings grown around some of a region's
+// edge vertices must be those of a multi-source search.
 
 #include <expmap/Analytic_surfaces.h>
 #include <expmap/internal/Indexed_mesh.h>
@@ -15,6 +16,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <queue>
 #include <vector>
 
@@ -40,18 +42,26 @@ std::vector<int> hops_from(const expmap::internal::Mesh_arrays& m, int source) {
   return hops;
 }
 
+// An icosphere of 2,562 vertices, its arrays and a set of marks for them.
+struct Icosphere {
+  Surface_mesh mesh = [] {
+    Surface_mesh sphere;
+    expmap::soup_to_mesh(expmap::make_icosphere(4, 1.0), sphere);
+    return sphere;
+  }();
+  const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed{
+      mesh, get(CGAL::vertex_point, mesh)};
+  const expmap::internal::Mesh_arrays& m = indexed.arrays;
+  expmap::internal::Vertex_marks marks;
+  Icosphere() { marks.resize(m.point.size()); }
+};
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(region_growing)
 
-BOOST_AUTO_TEST_CASE(a_continued_breadth_first_search_equals_a_fresh_one) {
-  Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_icosphere(4, 1.0), mesh);
-  const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed(
-      mesh, get(CGAL::vertex_point, mesh));
-  const auto& m = indexed.arrays;
-  expmap::internal::Vertex_marks marks, fresh_marks;
-  marks.resize(m.point.size());
+BOOST_FIXTURE_TEST_CASE(a_continued_breadth_first_search_equals_a_fresh_one, Icosphere) {
+  expmap::internal::Vertex_marks fresh_marks;
   fresh_marks.resize(m.point.size());
   for (int source : {0, 17, 1500}) {
     const std::vector<int> hops = hops_from(m, source);
@@ -73,6 +83,62 @@ BOOST_AUTO_TEST_CASE(a_continued_breadth_first_search_equals_a_fresh_one) {
       }
     }
   }
+}
+
+// Rings grown around some vertices of a region's edge: every vertex outside
+// the region within k hops of those seeds through vertices outside the
+// region (checked against a plain std::queue search), each appended once and
+// marked with its position.
+BOOST_FIXTURE_TEST_CASE(rings_around_seeds_equal_a_multi_source_search, Icosphere) {
+  std::vector<int> frontier, next;
+  for (int source : {0, 17, 1500})
+    for (int rings : {1, 2, 5}) {
+      std::vector<int> region;
+      expmap::internal::grow_region_by_hops(m, source, marks, 300, region);
+      const std::vector<int> inside = region;
+      std::vector<char> in_region(m.point.size(), 0);
+      for (int v : inside) in_region[v] = 1;
+      // Seeds: every third vertex of the region's edge (one side grows more).
+      std::vector<int> seeds;
+      int edge_count = 0;
+      for (int v : inside)
+        for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p)
+          if (!in_region[m.neighbor[p]]) {
+            if (edge_count++ % 3 == 0) seeds.push_back(v);
+            break;
+          }
+      expmap::internal::grow_rings_around(m, marks, seeds, rings, region, frontier, next);
+      // Reference: hops from the seeds through vertices outside the region.
+      std::vector<int> hops(m.point.size(), -1);
+      std::queue<int> queue;
+      for (int v : seeds) {
+        hops[v] = 0;
+        queue.push(v);
+      }
+      while (!queue.empty()) {
+        const int v = queue.front();
+        queue.pop();
+        if (hops[v] == rings) continue;
+        for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
+          const int w = m.neighbor[p];
+          if (hops[w] < 0 && !in_region[w]) {
+            hops[w] = hops[v] + 1;
+            queue.push(w);
+          }
+        }
+      }
+      std::vector<int> expected;
+      for (int v = 0; v < static_cast<int>(m.point.size()); ++v)
+        if (hops[v] > 0) expected.push_back(v);
+      std::vector<int> added(region.begin() + static_cast<std::ptrdiff_t>(inside.size()), region.end());
+      std::sort(added.begin(), added.end());
+      BOOST_TEST_CONTEXT("source " << source << ", rings " << rings) {
+        BOOST_TEST(!added.empty());
+        BOOST_TEST(added == expected, boost::test_tools::per_element());
+        for (std::size_t i = 0; i < region.size(); ++i)
+          BOOST_TEST(marks.value(region[i]) == static_cast<int>(i));
+      }
+    }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

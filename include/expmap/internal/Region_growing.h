@@ -120,6 +120,28 @@ inline std::size_t continue_region_by_hops(const Mesh_arrays& m, Vertex_marks& i
   return budget_reached ? head - 1 : head;
 }
 
+/// Appends to `region` every vertex within `rings` edge hops of `seeds` that
+/// is not marked yet, marking each with its position: a breadth-first
+/// search from several seeds at once, one ring at a time. `frontier` and
+/// `next` are scratch space.
+inline void grow_rings_around(const Mesh_arrays& m, Vertex_marks& in_region,
+                              const std::vector<int>& seeds, int rings, std::vector<int>& region,
+                              std::vector<int>& frontier, std::vector<int>& next) {
+  frontier.assign(seeds.begin(), seeds.end());
+  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+    next.clear();
+    for (const int v : frontier)
+      for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
+        const int w = m.neighbor[p];
+        if (in_region.is_marked(w)) continue;
+        in_region.mark(w, static_cast<int>(region.size()));
+        region.push_back(w);
+        next.push_back(w);
+      }
+    frontier.swap(next);
+  }
+}
+
 /// Breadth-first search from `source` over the mesh edges, appending up to
 /// `budget` vertices to `region` (nearest first in edge hops) and marking
 /// each with its position. Cheaper than `grow_region` (no heap, no lengths)
