@@ -260,46 +260,6 @@ std::vector<Query_record> time_interleaved(const std::vector<Query_method>& meth
   return records;
 }
 
-/// heat-full: the same object queried for the whole component
-/// (Patch::fraction(1)), i.e. solving over the whole mesh; each query the
-/// fastest of `repeats` runs, as the localized queries.
-std::vector<Query_record> time_full_queries(const Heat& heat,
-                                            const std::vector<std::size_t>& sources,
-                                            std::size_t count, std::size_t repeats) {
-  std::vector<Query_record> records;
-  const expmap::Patch whole = expmap::Patch::fraction(1.0);
-  try {
-    (void)heat.compute_by_index(sources.front(), whole);
-  } catch (const std::exception& e) {
-    std::cerr << "  warning: heat-full warm-up query failed: " << e.what() << "\n";
-  }
-  for (std::size_t i = 0; i < std::min(count, sources.size()); ++i) {
-    Query_record r;
-    r.method = "heat-full";
-    r.fraction = 1.0;
-    r.source = sources[i];
-    for (std::size_t repeat = 0; repeat < repeats; ++repeat) {
-      try {
-        Stopwatch watch;
-        const auto map = heat.compute_by_index(sources[i], whole);
-        const double ms = watch.milliseconds();
-        if (std::isnan(r.ms) || ms < r.ms) {
-          r.ms = ms;
-          r.patch_vertices = map.size();
-          r.statistics = map.statistics;
-        }
-      } catch (const std::exception& e) {
-        std::cerr << "  warning: heat-full source " << sources[i] << " failed: " << e.what()
-                  << "\n";
-        r.ms = nan_value;
-        break;
-      }
-    }
-    records.push_back(r);
-  }
-  return records;
-}
-
 /// Measures the stream floor of every query of `method` (after all queries were
 /// timed, so the floor's buffers do not disturb the queries' caches).
 void measure_stream_floors(std::vector<Query_record>& records, const std::string& method,
@@ -473,8 +433,15 @@ class Benchmark {
     }
     if (std::count(m_options.methods.begin(), m_options.methods.end(), "heat-full") > 0) {
       Stopwatch watch;
-      const std::size_t count = m_options.full_sources > 0 ? m_options.full_sources : sources.size();
-      std::vector<Query_record> r = time_full_queries(*heat, sources, count, m_options.repeats);
+      // The same object queried for the whole component (Patch::fraction(1)),
+      // i.e. solving over the whole mesh, from the first sources.
+      const std::size_t count =
+          std::min(m_options.full_sources > 0 ? m_options.full_sources : sources.size(),
+                   sources.size());
+      const std::vector<std::size_t> full_sources(
+          sources.begin(), sources.begin() + static_cast<std::ptrdiff_t>(count));
+      std::vector<Query_record> r = time_interleaved({query_method("heat-full", *heat)},
+                                                     full_sources, {1.0}, m_options.repeats);
       measure_stream_floors(r, "heat-full", floor);
       floor.release();
       std::cout << "  heat-full: " << r.size() << " queries, each the fastest of "

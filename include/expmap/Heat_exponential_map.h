@@ -608,17 +608,16 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::widen_candidates(std::size_t 
   };
   // Rings around the region's vertices on the candidates' edge, on that
   // side only, until the region is clear of the edge.
-  for (int round = 0; round < targeted_widening_rounds && !whole_component; ++round) {
+  for (int round = 0;; ++round) {
+    if (whole_component) return stats;
     edge_of_candidates(ws.heat_row, ws);
     if (ws.cut_short_at.empty()) return stats;
+    if (round == targeted_widening_rounds) break;
     internal::grow_rings_around(m_indexed.arrays, ws.in_region, ws.cut_short_at,
                                 targeted_widening_rings(target), ws.candidates, ws.frontier,
                                 ws.next_frontier);
     take_new_candidates();
   }
-  if (whole_component) return stats;
-  edge_of_candidates(ws.heat_row, ws);
-  if (ws.cut_short_at.empty()) return stats;
   // Still on the edge (a mesh much finer one way than the other): the
   // breadth-first search continued everywhere.
   ws.breadth_first_head = internal::continue_region_by_hops(
