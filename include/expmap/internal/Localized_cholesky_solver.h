@@ -5,6 +5,7 @@
 
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Solve_statistics.h>
+#include <expmap/internal/Huge_page_allocator.h>
 #include <expmap/internal/Supernodal_factor.h>
 
 #include <algorithm>
@@ -88,7 +89,7 @@ class Localized_cholesky_solver {
       }
       return m_stamp;
     }
-    std::vector<double> m_storage;
+    std::vector<double, Huge_page_allocator<double>> m_storage;
     double* m_block = nullptr;  // m_storage, aligned
     std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
     std::vector<int> m_forward_entry, m_backward_entry;  // first column needed

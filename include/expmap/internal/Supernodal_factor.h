@@ -4,6 +4,7 @@
 #define EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
 
 #include <expmap/Cholesky_factor_view.h>
+#include <expmap/internal/Huge_page_allocator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -45,8 +46,9 @@ struct Supernodal_factor {
   int size = 0;
   std::vector<Supernode> supernode;
   std::vector<int> supernode_of_column;
-  std::vector<int> row_index;
-  std::vector<double> value;
+  // The arrays a solve reads in scattered pieces (see Huge_page_allocator).
+  std::vector<int, Huge_page_allocator<int>> row_index;
+  std::vector<double, Huge_page_allocator<double>> value;
   std::vector<int> permutation;          // pivot -> row of A
   std::vector<int> inverse_permutation;  // row of A -> pivot
 
