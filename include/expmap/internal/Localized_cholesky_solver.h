@@ -592,10 +592,7 @@ class Localized_cholesky_solver {
         for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
           for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
       }
-      for (int a = first; a < r - 3; ++a)
-        for (int w = 0; w < W; ++w)
-          ys[a * W + w] -= l[0][a] * x[0][w] + l[1][a] * x[1][w] + l[2][a] * x[2][w] +
-                           l[3][a] * x[3][w];
+      subtract_four_rows<W>(l, x, first, r - 3, ys);
     }
     for (; r >= first; --r) {
       double* yr = ys + r * W;
@@ -734,6 +731,19 @@ class Localized_cholesky_solver {
       subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
   }
 
+  // ys[a * W + w] -= sum over k < 4 of l[k][a] * x[k][w], for a in
+  // [begin, end): four solved rows subtracted in one pass over ys (each of
+  // its rows read and written once per four rows of L).
+  template <int W>
+  static void subtract_four_rows(const double* const (&l)[4],
+                                 const std::array<std::array<double, W>, 4>& x, int begin,
+                                 int end, double* ys) {
+    for (int a = begin; a < end; ++a)
+      for (int w = 0; w < W; ++w)
+        ys[a * W + w] -=
+            l[0][a] * x[0][w] + l[1][a] * x[1][w] + l[2][a] * x[2][w] + l[3][a] * x[3][w];
+  }
+
   // backward_below for more columns than a block: the rows below are read
   // in memory order, four at a time, each group updating the columns'
   // partial solutions in ys once (ys stays in the first-level cache). Per
@@ -747,19 +757,14 @@ class Localized_cholesky_solver {
     const std::size_t stride = static_cast<std::size_t>(sn.ncol);
     int t = 0;
     for (; t + 4 <= sn.nbelow; t += 4) {
-      const double* l0 = below + static_cast<std::size_t>(t) * stride;
-      const double* l1 = l0 + stride;
-      const double* l2 = l1 + stride;
-      const double* l3 = l2 + stride;
-      const double* x0 = y + static_cast<std::size_t>(below_rows[t]) * W;
-      const double* x1 = y + static_cast<std::size_t>(below_rows[t + 1]) * W;
-      const double* x2 = y + static_cast<std::size_t>(below_rows[t + 2]) * W;
-      const double* x3 = y + static_cast<std::size_t>(below_rows[t + 3]) * W;
-      std::array<double, W> a0, a1, a2, a3;
-      for (int w = 0; w < W; ++w) { a0[w] = x0[w]; a1[w] = x1[w]; a2[w] = x2[w]; a3[w] = x3[w]; }
-      for (int c = first; c < end; ++c)
-        for (int w = 0; w < W; ++w)
-          ys[c * W + w] -= l0[c] * a0[w] + l1[c] * a1[w] + l2[c] * a2[w] + l3[c] * a3[w];
+      const double* l[4];
+      std::array<std::array<double, W>, 4> x;
+      for (int k = 0; k < 4; ++k) {
+        l[k] = below + static_cast<std::size_t>(t + k) * stride;
+        const double* xk = y + static_cast<std::size_t>(below_rows[t + k]) * W;
+        for (int w = 0; w < W; ++w) x[k][w] = xk[w];
+      }
+      subtract_four_rows<W>(l, x, first, end, ys);
     }
     for (; t < sn.nbelow; ++t) {
       const double* l = below + static_cast<std::size_t>(t) * stride;
