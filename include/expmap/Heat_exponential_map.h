@@ -444,15 +444,19 @@ class Heat_exponential_map
     if (!is_linear_in_heat(m_angle_estimator)) return star.vertices.size();
     return m_separate_distance_heat ? 3 : 2;
   }
-  // Direction of the geodesic from s to patch vertex v at heat distance r,
-  // from the star solve's row `h` (see solve_star_heat), blended with the
-  // geometric direction next to the source (Near_source_blend, see
-  // near_source_angle). `at_source` is the heat from v at s (for
-  // `heat_quadratic_fit`).
-  double polar_angle(int s, int v, double r, double at_source,
-                     const internal::Tangent_frame& frame, const internal::Star_gradient& star,
-                     const internal::Source_one_ring& ring, const double* h,
-                     std::vector<double>& values) const;
+  // The gradient at s of the heat from patch vertex v, from the star
+  // solve's row `h` (see solve_star_heat): the direction of the geodesic
+  // from s to v (the paper's step 3, by the heat's symmetry). For
+  // `heat_quadratic_fit` it is divided by `at_source`, the heat from v at
+  // s, and still carries the fit's cubic leak (see write_result).
+  std::array<double, 2> heat_direction(double at_source, const internal::Star_gradient& star,
+                                       const double* h, std::vector<double>& values) const;
+  // Polar angle of v at heat distance r from its heat direction, blended
+  // with the geometric direction next to the source (Near_source_blend, see
+  // near_source_angle).
+  double polar_angle(int s, int v, double r, const std::array<double, 2>& direction,
+                     const internal::Tangent_frame& frame,
+                     const internal::Source_one_ring& ring) const;
   // The geometric direction of v next to the source: a neighbour's edge at
   // its intrinsic angle (the corner angles at s summed and rescaled to
   // 2 pi, as DGPC starts), any other vertex's chord projected onto the
@@ -883,10 +887,15 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                                                     const std::vector<std::size_t>& order,
                                                     const Workspace& ws, Result& result) const {
   const std::size_t width = star_columns(star);
-  std::vector<internal::Polar_entry> entries;
-  entries.reserve(order.size());
+  const bool remove_leak = m_angle_estimator == Angle_estimator::heat_quadratic_fit;
   std::vector<double> values(star.vertices.size());
-  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, frame);
+  // Step 7: the heat directions of the patch vertices (where the blend
+  // wants them), then, for the quadratic fit, their cubic leak removed for
+  // all of them at once.
+  std::vector<std::array<double, 2>> direction(order.size());
+  std::vector<std::array<double, 2>> leaking;
+  std::vector<double> leak_radius;
+  std::vector<std::size_t> leaking_at;
   for (std::size_t p = 0; p < order.size(); ++p) {
     const std::size_t i = order[p];
     const int v = ws.region[i];
@@ -902,10 +911,27 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                               std::to_string(m_indexed.arrays.to_original(v)) +
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
+    if (v == s || heat_weight(ws.potential[i]) == 0.0) continue;  // no heat direction needed
+    direction[p] = heat_direction(at_source, star, h, values);
+    if (remove_leak && at_source > 0) {
+      leaking.push_back(direction[p]);
+      leak_radius.push_back(std::max(ws.potential[i], m_indexed.arrays.mean_edge_length));
+      leaking_at.push_back(p);
+    }
+  }
+  internal::remove_cubic_leak(star, leaking.data(), leak_radius.data(), leaking.size(), m_time_step);
+  for (std::size_t k = 0; k < leaking_at.size(); ++k) direction[leaking_at[k]] = leaking[k];
+
+  std::vector<internal::Polar_entry> entries;
+  entries.reserve(order.size());
+  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, frame);
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const std::size_t i = order[p];
+    const int v = ws.region[i];
     if (v == s) continue;
     entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)),
                        blended_distance(s, v, ws.potential[i], ring),
-                       polar_angle(s, v, ws.potential[i], at_source, frame, star, ring, h, values)});
+                       polar_angle(s, v, ws.potential[i], direction[p], frame, ring)});
   }
   Solve_statistics statistics = result.statistics;
   result = internal::assemble_local_map(static_cast<int>(m_indexed.arrays.to_original(s)), entries,
@@ -914,30 +940,29 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
 }
 
 template <class TM, class VPM, class S>
-double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r, double at_source,
-                                                     const internal::Tangent_frame& frame,
-                                                     const internal::Star_gradient& star,
-                                                     const internal::Source_one_ring& ring,
-                                                     const double* h,
-                                                     std::vector<double>& values) const {
-  const double h_mean = m_indexed.arrays.mean_edge_length;
-  const double w = heat_weight(r);
-  if (w == 0.0) return near_source_angle(s, v, frame, ring);  // no heat direction needed
-  // Step 3 of the paper: the direction of the geodesic to v is the gradient
-  // at s of the heat from v, (h_v)_k = (h_k)_v by symmetry.
-  std::array<double, 2> g;
+std::array<double, 2> Heat_exponential_map<TM, VPM, S>::heat_direction(
+    double at_source, const internal::Star_gradient& star, const double* h,
+    std::vector<double>& values) const {
   if (is_linear_in_heat(m_angle_estimator)) {
-    g = {{h[0], h[1]}};  // the solve applied the gradient weights already
+    // The solve applied the gradient weights already.
     if (m_angle_estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
-      g = internal::remove_cubic_leak(star, {{g[0] / at_source, g[1] / at_source}},
-                                      std::max(r, h_mean), m_time_step);
-  } else {
-    const std::size_t width = star.vertices.size();
-    const bool use_log = std::all_of(h, h + width, [](double x) { return x > 0; });
-    for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
-    g = star.apply(values.data());
+      return {{h[0] / at_source, h[1] / at_source}};
+    return {{h[0], h[1]}};
   }
-  const double heat_angle = std::atan2(g[1], g[0]);
+  const std::size_t width = star.vertices.size();
+  const bool use_log = std::all_of(h, h + width, [](double x) { return x > 0; });
+  for (std::size_t c = 0; c < width; ++c) values[c] = use_log ? std::log(h[c]) : h[c];
+  return star.apply(values.data());
+}
+
+template <class TM, class VPM, class S>
+double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r,
+                                                     const std::array<double, 2>& direction,
+                                                     const internal::Tangent_frame& frame,
+                                                     const internal::Source_one_ring& ring) const {
+  const double w = heat_weight(r);
+  if (w == 0.0) return near_source_angle(s, v, frame, ring);
+  const double heat_angle = std::atan2(direction[1], direction[0]);
   if (w == 1.0) return heat_angle;
   const double geometric = near_source_angle(s, v, frame, ring);
   // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.

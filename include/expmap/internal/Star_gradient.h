@@ -173,26 +173,55 @@ constexpr double leak_swinging_turn = 1e-2;
 /// mean angle error as `log_heat_quadratic_fit`).
 inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
                                                const std::array<double, 2>& fitted, double r,
-                                               double time) {
-  // The Hessian model of the log heat from a vertex at distance r (see
-  // above): curvature a across the direction, b along it.
-  const double a = -(1 / std::sqrt(time) + 1 / (2 * r)) / r, b = 1 / (2 * r * r);
-  std::array<double, 2> g = fitted;
-  for (int step = 0; step < max_leak_steps; ++step) {
-    // std::hypot costs as much as the rest of a step; its guard against
-    // overflow is kept for squares that are not normal numbers.
+                                               double time);
+
+namespace cubic_leak_detail {
+
+/// One vertex's fixed point in `remove_cubic_leak`.
+struct Iteration {
+  std::array<double, 2> fitted{};
+  std::array<double, 2> g{};
+  double a = 0, b = 0;  // the Hessian model's curvatures across and along g
+
+  Iteration() = default;
+  Iteration(const std::array<double, 2>& fitted_gradient, double r, double time)
+      : fitted(fitted_gradient),
+        g(fitted_gradient),
+        a(-(1 / std::sqrt(time) + 1 / (2 * r)) / r),
+        b(1 / (2 * r * r)) {}
+
+  /// Step `step` (from 0); false once `result` holds the answer.
+  bool step(const Star_gradient& star, int step, std::array<double, 2>& result) {
+    // Q needs only n n^T = g g^T / |g|^2: one division per step, no square
+    // root (the steps form a chain of dependent operations, and a square
+    // root or a division costs as much as the rest of a step). Squares that
+    // are not normal numbers take the overflow-safe route.
     const double square = g[0] * g[0] + g[1] * g[1];
-    const double length = std::isnormal(square) ? std::sqrt(square) : std::hypot(g[0], g[1]);
-    if (!(length > 0) || !std::isfinite(length)) return fitted;
-    const double nx = g[0] / length, ny = g[1] / length;
-    const double qxx = a * (1 - nx * nx) + b * nx * nx, qxy = (b - a) * nx * ny,
-                 qyy = a * (1 - ny * ny) + b * ny * ny;
+    double xx, xy, yy;  // the entries of n n^T
+    if (std::isnormal(square)) {
+      const double inverse = 1 / square;
+      xx = g[0] * g[0] * inverse;
+      xy = g[0] * g[1] * inverse;
+      yy = g[1] * g[1] * inverse;
+    } else {
+      const double length = std::hypot(g[0], g[1]);
+      if (!(length > 0) || !std::isfinite(length)) {
+        result = fitted;
+        return false;
+      }
+      const double nx = g[0] / length, ny = g[1] / length;
+      xx = nx * nx;
+      xy = nx * ny;
+      yy = ny * ny;
+    }
+    const double qxx = a + (b - a) * xx, qxy = (b - a) * xy, qyy = a + (b - a) * yy;
     // Coefficients of x^3, x^2 y, x y^2, y^3.
+    constexpr double sixth = 1.0 / 6;
     const double coefficient[4] = {
-        g[0] * g[0] * g[0] / 6 + 0.5 * g[0] * qxx,
-        g[0] * g[0] * g[1] / 2 + 0.5 * (2 * g[0] * qxy + g[1] * qxx),
-        g[0] * g[1] * g[1] / 2 + 0.5 * (g[0] * qyy + 2 * g[1] * qxy),
-        g[1] * g[1] * g[1] / 6 + 0.5 * g[1] * qyy};
+        g[0] * g[0] * g[0] * sixth + 0.5 * g[0] * qxx,
+        g[0] * g[0] * g[1] * 0.5 + 0.5 * (2 * g[0] * qxy + g[1] * qxx),
+        g[0] * g[1] * g[1] * 0.5 + 0.5 * (g[0] * qyy + 2 * g[1] * qxy),
+        g[1] * g[1] * g[1] * sixth + 0.5 * g[1] * qyy};
     double leak_x = 0, leak_y = 0;
     for (int k = 0; k < 4; ++k) {
       leak_x += coefficient[k] * star.cubic_leak[k][0];
@@ -203,14 +232,54 @@ inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
     // less than leak_settled_turn.
     const double turn = g[0] * next[1] - g[1] * next[0], along = g[0] * next[0] + g[1] * next[1];
     g = next;
-    if (along > 0 && std::abs(turn) <= leak_settled_turn * along) return g;
-    if (step + 1 == max_leak_steps && !(along > 0 && std::abs(turn) <= leak_swinging_turn * along))
+    if (along > 0 && std::abs(turn) <= leak_settled_turn * along) {
+      result = g;
+      return false;
+    }
+    if (step + 1 == max_leak_steps) {
       // Still swinging: the model's cubic terms are too large for this star
       // and distance (coarse meshes, far vertices), and the last step is an
       // arbitrary direction (measured: up to pi from the fixed point on
       // dino). The fitted gradient, leak and all, is the better estimate.
-      return fitted;
+      const bool swinging = !(along > 0 && std::abs(turn) <= leak_swinging_turn * along);
+      result = swinging ? fitted : g;
+      return false;
+    }
+    return true;
   }
+};
+
+}  // namespace cubic_leak_detail
+
+/// `remove_cubic_leak` for many vertices of one star: `gradient[i]` (the
+/// fitted gradient of the heat from a vertex at distance `r[i]`, divided by
+/// that heat at s) is replaced by its result. Equal, bit for bit, to one
+/// call per vertex; the vertices' iterations are interleaved, a few at a
+/// time, because each alone is a chain of dependent operations that leaves
+/// most of the processor idle.
+inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* gradient,
+                              const double* r, std::size_t count, double time) {
+  constexpr std::size_t lanes = 4;
+  for (std::size_t first = 0; first < count; first += lanes) {
+    const std::size_t width = std::min(lanes, count - first);
+    std::array<cubic_leak_detail::Iteration, lanes> lane;
+    std::array<bool, lanes> running{};
+    for (std::size_t l = 0; l < width; ++l) {
+      lane[l] = cubic_leak_detail::Iteration(gradient[first + l], r[first + l], time);
+      running[l] = true;
+    }
+    for (int step = 0; step < max_leak_steps; ++step)
+      for (std::size_t l = 0; l < width; ++l)
+        if (running[l]) running[l] = lane[l].step(star, step, gradient[first + l]);
+  }
+}
+
+/// The gradient g of log h at s for one vertex (see above).
+inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
+                                               const std::array<double, 2>& fitted, double r,
+                                               double time) {
+  std::array<double, 2> g = fitted;
+  remove_cubic_leak(star, &g, &r, 1, time);
   return g;
 }
 
