@@ -167,8 +167,9 @@ constexpr double leak_swinging_turn = 1e-2;
 /// b = 1 / (2 r^2). A quadratic fit of h is exact up to second order; its
 /// response to the model's cubic Taylor terms, (g.x)^3 / 6 + (g.x) x^T Q x / 2,
 /// follows from `star.cubic_leak` and is subtracted, a fixed point in g
-/// found in a few steps (where the steps do not settle, the fitted gradient
-/// is returned unchanged). This is what the logarithmic fit achieves with one
+/// approached in at most `max_leak_steps` steps (where the last one still
+/// turns the direction by more than `leak_swinging_turn`, the fitted
+/// gradient is returned unchanged). This is what the logarithmic fit achieves with one
 /// solve per star vertex, from two solves (measured on spheres: the same
 /// mean angle error as `log_heat_quadratic_fit`).
 inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
