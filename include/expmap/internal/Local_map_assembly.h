@@ -22,6 +22,9 @@ struct Polar_entry {
 
 /// Angle wrapped to (-pi, pi], the range of `Local_map::angle`.
 inline double wrap_angle(double a) {
+  // Most angles come from atan2 and are in range already; std::remainder
+  // would return them unchanged, at the cost of a library call.
+  if (a > -M_PI && a <= M_PI) return a;
   const double two_pi = 2 * M_PI;
   a = std::remainder(a, two_pi);  // [-pi, pi]
   if (a <= -M_PI) a += two_pi;
