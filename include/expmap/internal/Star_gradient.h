@@ -156,29 +156,9 @@ constexpr double leak_settled_turn = 1e-7;
 /// than this (rad) shows an iteration that swings or diverges.
 constexpr double leak_swinging_turn = 1e-2;
 
-/// The gradient g of log h at s from `fitted`, the quadratic fit's gradient
-/// of the heat h from a vertex at distance r divided by that heat at s.
-///
-/// The heat from a far vertex is nearly h(s) exp(g.x + x^T Q x / 2) about
-/// s: one implicit step of diffusion time t has the kernel of the screened
-/// Poisson equation, whose logarithm falls off like -rho / sqrt(t) -
-/// log(rho) / 2 with the distance rho from its centre, so Q = a (I - n n^T)
-/// + b n n^T with n = g / |g|, a = -(1 / sqrt(t) + 1 / (2 r)) / r and
-/// b = 1 / (2 r^2). A quadratic fit of h is exact up to second order; its
-/// response to the model's cubic Taylor terms, (g.x)^3 / 6 + (g.x) x^T Q x / 2,
-/// follows from `star.cubic_leak` and is subtracted, a fixed point in g
-/// approached in at most `max_leak_steps` steps (where the last one still
-/// turns the direction by more than `leak_swinging_turn`, the fitted
-/// gradient is returned unchanged). This is what the logarithmic fit achieves with one
-/// solve per star vertex, from two solves (measured on spheres: the same
-/// mean angle error as `log_heat_quadratic_fit`).
-inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
-                                               const std::array<double, 2>& fitted, double r,
-                                               double time);
-
 namespace cubic_leak_detail {
 
-/// One vertex's fixed point in `remove_cubic_leak`.
+/// One vertex's fixed point in `remove_cubic_leak` (below).
 struct Iteration {
   std::array<double, 2> fitted{};
   std::array<double, 2> g{};
@@ -191,8 +171,8 @@ struct Iteration {
         a(-(1 / std::sqrt(time) + 1 / (2 * r)) / r),
         b(1 / (2 * r * r)) {}
 
-  /// Step `step` (from 0); false once `result` holds the answer.
-  bool step(const Star_gradient& star, int step, std::array<double, 2>& result) {
+  /// Step number `index` (from 0); false once `result` holds the answer.
+  bool step(const Star_gradient& star, int index, std::array<double, 2>& result) {
     // Q needs only n n^T = g g^T / |g|^2: one division per step, no square
     // root (the steps form a chain of dependent operations, and a square
     // root or a division costs as much as the rest of a step). Squares that
@@ -237,7 +217,7 @@ struct Iteration {
       result = g;
       return false;
     }
-    if (step + 1 == max_leak_steps) {
+    if (index + 1 == max_leak_steps) {
       // Still swinging: the model's cubic terms are too large for this star
       // and distance (coarse meshes, far vertices), and the last step is an
       // arbitrary direction (measured: up to pi from the fixed point on
@@ -252,7 +232,7 @@ struct Iteration {
 
 }  // namespace cubic_leak_detail
 
-/// `remove_cubic_leak` for many vertices of one star: `gradient[i]` (the
+/// `remove_cubic_leak` (below) for many vertices of one star: `gradient[i]` (the
 /// fitted gradient of the heat from a vertex at distance `r[i]`, divided by
 /// that heat at s) is replaced by its result. Equal, bit for bit, to one
 /// call per vertex; the vertices' iterations are interleaved, a few at a
@@ -275,7 +255,22 @@ inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* 
   }
 }
 
-/// The gradient g of log h at s for one vertex (see above).
+/// The gradient g of log h at s from `fitted`, the quadratic fit's gradient
+/// of the heat h from a vertex at distance r divided by that heat at s.
+///
+/// The heat from a far vertex is nearly h(s) exp(g.x + x^T Q x / 2) about
+/// s: one implicit step of diffusion time t has the kernel of the screened
+/// Poisson equation, whose logarithm falls off like -rho / sqrt(t) -
+/// log(rho) / 2 with the distance rho from its centre, so Q = a (I - n n^T)
+/// + b n n^T with n = g / |g|, a = -(1 / sqrt(t) + 1 / (2 r)) / r and
+/// b = 1 / (2 r^2). A quadratic fit of h is exact up to second order; its
+/// response to the model's cubic Taylor terms, (g.x)^3 / 6 + (g.x) x^T Q x / 2,
+/// follows from `star.cubic_leak` and is subtracted, a fixed point in g
+/// approached in at most `max_leak_steps` steps (where the last one still
+/// turns the direction by more than `leak_swinging_turn`, the fitted
+/// gradient is returned unchanged). This is what the logarithmic fit achieves with one
+/// solve per star vertex, from two solves (measured on spheres: the same
+/// mean angle error as `log_heat_quadratic_fit`).
 inline std::array<double, 2> remove_cubic_leak(const Star_gradient& star,
                                                const std::array<double, 2>& fitted, double r,
                                                double time) {
