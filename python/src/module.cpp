@@ -243,7 +243,7 @@ void bind_heat(py::module_& m) {
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     std::optional<double> distance_time_factor, py::handle laplacian,
                     py::handle regularization, double region_growth,
-                    py::handle angle_estimator, std::pair<double, double> near_source_blend) {
+                    double pruning_tolerance, py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
           options.distance_time_factor = distance_time_factor;
@@ -251,6 +251,7 @@ void bind_heat(py::module_& m) {
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.region_growth = region_growth;
+          options.pruning_tolerance = pruning_tolerance;
           options.angle_estimator =
               enum_argument<expmap::Angle_estimator>(angle_estimator, "angle_estimator");
           options.near_source_blend = {near_source_blend.first, near_source_blend.second};
@@ -264,6 +265,7 @@ void bind_heat(py::module_& m) {
         py::arg("laplacian") = defaults.laplacian,
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
+        py::arg("pruning_tolerance") = defaults.pruning_tolerance,
         py::arg("angle_estimator") = defaults.angle_estimator,
         py::arg("near_source_blend") =
             std::make_pair(defaults.near_source_blend.begin, defaults.near_source_blend.end),
@@ -277,6 +279,9 @@ void bind_heat(py::module_& m) {
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"
+        "pruning_tolerance: heat solves of small patches of large meshes skip\n"
+        "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
+        "    never).\n"
         "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
         "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
         "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"

@@ -7,6 +7,7 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <random>
 #include <unordered_map>
 
 #include "test_support.h"
@@ -106,6 +107,71 @@ BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
   expmap::soup_to_mesh(expmap::make_icosphere(5, 1.0), mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "sphere (10,242 vertices)", {0, 5000});
+}
+
+// Small patches of a large mesh prune their heat solves (Heat_options::
+// pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
+// radius in distance and 1e-10 rad in angle, and the solves must read fewer
+// factor entries. A torus of 230k vertices, large enough that the query
+// prunes, closed (pruning needs nonnegative cotan weights, which boundary
+// edges opposite obtuse angles break), its vertices moved at random by up
+// to 0.3 of the spacing (regular vertices give exactly tied distances,
+// which round-off may order either way).
+BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
+  const int around = 480, along = 480;
+  const double major = 3.0, minor = 1.0, step = 2 * M_PI / around;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> offset(-0.3 * step, 0.3 * step);
+  expmap::Triangle_soup torus;
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      const double u = i * step + offset(rng), v = j * step + offset(rng);
+      torus.points.push_back({(major + minor * std::cos(v)) * std::cos(u),
+                              (major + minor * std::cos(v)) * std::sin(u), minor * std::sin(v)});
+    }
+  auto at = [&](int i, int j) { return (j % along) * around + (i % around); };
+  for (int j = 0; j < along; ++j)
+    for (int i = 0; i < around; ++i) {
+      torus.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      torus.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(torus, mesh);
+  expmap::Heat_options unpruned_options;
+  unpruned_options.pruning_tolerance = 0;
+  const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
+  for (const std::size_t source : {std::size_t{1000}, std::size_t{around * along / 2 + 77}})
+    for (const double fraction : {0.001, 0.004}) {
+      const auto a = pruned.compute_by_index(source, expmap::Patch::fraction(fraction));
+      const auto b = unpruned.compute_by_index(source, expmap::Patch::fraction(fraction));
+      BOOST_TEST_REQUIRE(a.indices == b.indices);
+      const double radius = b.distance.back();
+      double distance_error = 0, angle_error = 0;
+      for (std::size_t i = 0; i < a.size(); ++i) {
+        distance_error = std::max(distance_error, std::abs(a.distance[i] - b.distance[i]) / radius);
+        angle_error =
+            std::max(angle_error, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
+      }
+      BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%: pruned solves read "
+                                   << a.statistics.factor_entries << " of "
+                                   << b.statistics.factor_entries << " factor entries; distance "
+                                   << distance_error << " of the radius, angle " << angle_error
+                                   << " rad");
+      BOOST_TEST(distance_error <= 1e-10);
+      BOOST_TEST(angle_error <= 1e-10);
+      BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(pruning_tolerance_out_of_range_is_rejected) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
+  for (const double tolerance : {-1e-14, 1e-6, std::nan("")}) {
+    expmap::Heat_options options;
+    options.pruning_tolerance = tolerance;
+    BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
+                      expmap::Invalid_input);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

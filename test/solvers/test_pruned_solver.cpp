@@ -93,9 +93,59 @@ void check_pruned_heat(double weight_scale, int cx, int cy, int radius) {
                                           << full_stats.factor_entries << " factor entries");
 }
 
+// The heat from `centre` on a disk, pruned and kept for extension, then
+// extended to a wider disk (the source-heat solve of a query whose
+// candidates grow): every value against CHOLMOD's full solve. The extended
+// rows carry the pruning error of the rows above them (about drop_below),
+// so they stay within 1e-10 of themselves while their heat is at least
+// 1e-2 of the first disk's smallest (tolerance 1e-12).
+void check_extended_pruned_heat(int cx, int cy, int radius, int wider) {
+  const auto A = expmap_test::random_grid_operator(side, side, 5, /*diagonal=*/1.0, 1.0);
+  expmap::Cholmod_solver solver;
+  solver.factor(A);
+  const Localized_cholesky_solver local(solver.factor_view());
+  auto ws = local.make_workspace();
+  auto disk = [&](int r) {
+    std::vector<int> rows;
+    for (int y = cy - r; y <= cy + r; ++y)
+      for (int x = cx - r; x <= cx + r; ++x)
+        if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) rows.push_back(grid_id(x, y));
+    return rows;
+  };
+  const std::vector<int> inner = disk(radius), outer = disk(wider);
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(A.rows());
+  b[grid_id(cx, cy)] = 1.0;
+  const Eigen::VectorXd exact = solver.solve(b);
+  double smallest = exact[inner.front()];
+  for (const int v : inner) smallest = std::min(smallest, exact[v]);
+  const std::vector<Rhs_entry> entries{{grid_id(cx, cy), 0, 1.0}};
+
+  std::vector<double> unpruned(inner.size()), pruned(inner.size()), extended(outer.size());
+  const auto full_stats =
+      local.solve_extendable(entries, 1, inner.data(), inner.size(), unpruned.data(), *ws);
+  const auto pruned_stats = local.solve_extendable_pruned(
+      entries, 1, inner.data(), inner.size(), pruned.data(), *ws, 1e-12 * smallest);
+  local.extend(outer.data(), outer.size(), extended.data(), *ws);
+  auto worst_error = [&](const std::vector<int>& rows, const std::vector<double>& values) {
+    double worst = 0;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      if (exact[rows[i]] >= 1e-2 * smallest)
+        worst = std::max(worst, std::abs(values[i] - exact[rows[i]]) / exact[rows[i]]);
+    return worst;
+  };
+  BOOST_TEST(worst_error(inner, pruned) <= 1e-10);
+  BOOST_TEST(worst_error(outer, extended) <= 1e-10);
+  BOOST_TEST(pruned_stats.factor_entries < full_stats.factor_entries);
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(pruned_solver)
+
+BOOST_AUTO_TEST_CASE(pruned_extendable_heat_stays_accurate_when_extended) {
+  check_extended_pruned_heat(40, 100, 10, 14);
+  check_extended_pruned_heat(90, 60, 16, 24);
+}
 
 // Fast decay (about 0.4 per grid step): most of the top separators is skipped.
 BOOST_AUTO_TEST_CASE(pruned_heat_is_accurate_relative_to_each_value) {

@@ -160,15 +160,20 @@ class Localized_cholesky_solver {
   Solve_statistics solve_extendable(const std::vector<Rhs_entry>& entries, int width,
                                     const int* rows, std::size_t row_count, double* out,
                                     Workspace& ws) const {
-    if (width < 1 || width > max_block_width)
-      throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    Solve_statistics stats =
-        dispatch(entries, width, rows, row_count, out, ws, Pruning{}, /*keep=*/true);
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{});
+  }
+
+  /// `solve_extendable()` pruned as `solve_pruned()` prunes. `extend()`
+  /// then solves the new supernodes in full, from the pruned values above
+  /// them: the new rows' values carry the pruning error of those values
+  /// (at most about `drop_below`), so a caller checking the choice of
+  /// `drop_below` checks it on the extended rows too.
+  /// \pre drop_below >= 0 and finite.
+  Solve_statistics solve_extendable_pruned(const std::vector<Rhs_entry>& entries, int width,
+                                           const int* rows, std::size_t row_count, double* out,
+                                           Workspace& ws, double drop_below) const {
+    check_drop_below(drop_below);
+    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
   }
 
   /// The solution of the last `solve_extendable()` on `ws` at `rows` (which
@@ -227,8 +232,7 @@ class Localized_cholesky_solver {
   Solve_statistics solve_pruned(const std::vector<Rhs_entry>& entries, int width,
                                 const int* rows, std::size_t row_count, double* out,
                                 Workspace& ws, double drop_below) const {
-    if (!(drop_below >= 0) || !std::isfinite(drop_below))
-      throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
+    check_drop_below(drop_below);
     return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
   }
 
@@ -276,6 +280,25 @@ class Localized_cholesky_solver {
     bool enabled = false;
     double drop_below = 0;
   };
+
+  static void check_drop_below(double drop_below) {
+    if (!(drop_below >= 0) || !std::isfinite(drop_below))
+      throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
+  }
+
+  // solve_extendable and solve_extendable_pruned: one block, kept in `ws`.
+  Solve_statistics solve_and_keep(const std::vector<Rhs_entry>& entries, int width,
+                                  const int* rows, std::size_t row_count, double* out,
+                                  Workspace& ws, Pruning pruning) const {
+    if (width < 1 || width > max_block_width)
+      throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
+    const auto start = std::chrono::steady_clock::now();
+    prepare(ws);
+    Solve_statistics stats = dispatch(entries, width, rows, row_count, out, ws, pruning, /*keep=*/true);
+    stats.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
 
   Solve_statistics solve_in_blocks(const std::vector<Rhs_entry>& entries, int width,
                                    const int* rows, std::size_t row_count, double* out,
