@@ -93,15 +93,16 @@ struct Heat_options {
   /// margin. Must be at least 1.
   double region_growth = 2.0;
   /// The heat from the source decays exponentially with distance, and so do
-  /// the triangular solves' intermediate values: entries of the source-heat
-  /// solve below this tolerance times the smallest heat the region reads are
-  /// not propagated (`Localized_cholesky_solver::solve_pruned`), which
-  /// skips most of the dense top separators on meshes much larger than the
-  /// patch. Every heat value the distance is integrated from stays within
-  /// about this tolerance of the unpruned one, relative to itself (the query
-  /// checks its choice and solves again if it was too bold). Used when the
-  /// heat matrix is an M-matrix (intrinsic Delaunay Laplacian, or a Delaunay
-  /// mesh); 0 solves without pruning. At most 1e-10.
+  /// the triangular solves' intermediate values: on small patches of large
+  /// meshes (a component of at least 200,000 vertices, candidates at most
+  /// 1/50 of it), entries of the heat solves below this tolerance times the
+  /// smallest value read are not propagated
+  /// (`Localized_cholesky_solver::solve_pruned`), which skips most of the
+  /// dense top separators. Every value read stays within about this
+  /// tolerance of the unpruned one, relative to itself (the query checks its
+  /// guess of the threshold and solves again if it was too bold). Used when
+  /// the heat matrix is an M-matrix (intrinsic Delaunay Laplacian and no
+  /// obtuse angle opposite a boundary edge); 0 never prunes. At most 1e-10.
   double pruning_tolerance = 1e-14;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
@@ -595,7 +596,7 @@ bool Heat_exponential_map<TM, VPM, S>::prunes(int s, std::size_t count) const {
   // solves walk whatever its size; it pays when they are most of the work,
   // on patches much smaller than a large mesh. Measured (doc/paper_scale.md):
   // 25% faster queries at 0.26% candidates of a 2.85M-vertex mesh, 6% at
-  // 1.3%, 9% at 0.26% of a 711k-vertex one; at 2.6% candidates, on either,
+  // 1.3%, 3-9% at 0.26% of a 711k-vertex one; at 2.6% candidates, on either,
   // pruned solves read 17-19% fewer factor entries but took as long (the
   // pruned kernels are slower per entry). On meshes of 26k-45k vertices the
   // far separators are too near for the heat to fall below the threshold:
