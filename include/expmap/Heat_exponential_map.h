@@ -595,12 +595,13 @@ bool Heat_exponential_map<TM, VPM, S>::prunes(int s, std::size_t count) const {
   // Pruning skips the far parts of the top separators, which a query's
   // solves walk whatever its size; it pays when they are most of the work,
   // on patches much smaller than a large mesh. Measured (doc/paper_scale.md):
-  // 25% faster queries at 0.26% candidates of a 2.85M-vertex mesh, 6% at
-  // 1.3%, 3-9% at 0.26% of a 711k-vertex one; at 2.6% candidates, on either,
-  // pruned solves read 17-19% fewer factor entries but took as long (the
-  // pruned kernels are slower per entry). On meshes of 26k-45k vertices the
-  // far separators are too near for the heat to fall below the threshold:
-  // nothing was pruned, and the checks cost 7-11% of a 0.1% query.
+  // 31% faster queries at 0.26% candidates of a 2.85M-vertex mesh, 9% at
+  // 1.3%; 11-16% and 3-6% on a 711k-vertex one. At 2.6% candidates, on
+  // either, pruned solves read 17-19% fewer factor entries but took as long
+  // (measured before the pruned back substitution went four rows at a time).
+  // On meshes of 26k-45k vertices the far separators are too near for the
+  // heat to fall below the threshold: nothing was pruned, and the checks
+  // cost 7-11% of a 0.1% query.
   const auto component = static_cast<std::size_t>(
       m_indexed.arrays.component_size[m_indexed.arrays.component[s]]);
   return m_pruning_tolerance > 0 && component >= min_pruned_component &&

@@ -679,9 +679,12 @@ class Localized_cholesky_solver {
 
   // backward_supernode for a pruned solve: only the rows below (solved
   // ancestors) and the rows of the diagonal block whose solutions are above
-  // `drop_below` are subtracted, each a contiguous row of L times its
-  // solution. `kept` receives the rows below that are. Returns the factor
-  // entries read.
+  // `drop_below` are subtracted. Both go four rows of L at a time, as in the
+  // full kernel (each row of ys read and written once per four rows of L):
+  // the kept rows below in groups of four, the diagonal block in its groups
+  // of four rows with the solutions at or below the threshold propagated as
+  // zeros, and a group skipped when all four are. `kept` receives the rows
+  // below that are kept. Returns the factor entries read.
   template <int W>
   std::size_t backward_supernode_pruned(const Supernodal_factor::Supernode& sn, int first,
                                         double* ys, const double* y, double drop_below,
@@ -698,15 +701,50 @@ class Localized_cholesky_solver {
       // Nothing to skip below: the register-blocked kernel of the full solve.
       backward_below<W>(sn, first, ys, y, sn.ncol);
     } else {
-      for (const int t : kept) {
-        const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
-        const double* xt = y + static_cast<std::size_t>(below_rows[t]) * W;
+      std::size_t i = 0;
+      for (; i + 4 <= kept.size(); i += 4) {
+        const double* l[4];
+        std::array<std::array<double, W>, 4> x;
+        for (int k = 0; k < 4; ++k) {
+          const int t = kept[i + static_cast<std::size_t>(k)];
+          l[k] = below + static_cast<std::size_t>(t) * sn.ncol;
+          for (int w = 0; w < W; ++w) x[k][w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
+        }
+        subtract_four_rows<W>(l, x, first, sn.ncol, ys);
+      }
+      for (; i < kept.size(); ++i) {
+        const double* l = below + static_cast<std::size_t>(kept[i]) * sn.ncol;
+        const double* xt = y + static_cast<std::size_t>(below_rows[kept[i]]) * W;
         for (int c = first; c < sn.ncol; ++c)
           for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * xt[w];
       }
     }
     const double* diagonal = F.value.data() + sn.diagonal;
-    for (int r = sn.ncol - 1; r >= first; --r) {
+    int r = sn.ncol - 1;
+    for (; r - 3 >= first; r -= 4) {
+      const double* l[4];
+      std::array<std::array<double, W>, 4> x;
+      bool any = false;
+      for (int k = 0; k < 4; ++k) {
+        const int row = r - k;
+        l[k] = diagonal + Supernodal_factor::triangle_row(row);
+        double* yr = ys + row * W;
+        const double inverse = m_inverse_diagonal[sn.first_column + row];
+        for (int w = 0; w < W; ++w) yr[w] *= inverse;
+        ++read;
+        const bool kept_row = above<W>(yr, drop_below);
+        any = any || kept_row;
+        for (int w = 0; w < W; ++w) x[k][w] = kept_row ? yr[w] : 0.0;
+        if (!kept_row) continue;
+        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
+          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
+        read += static_cast<std::size_t>(3 - k);
+      }
+      if (!any) continue;
+      subtract_four_rows<W>(l, x, first, r - 3, ys);
+      read += 4 * static_cast<std::size_t>(r - 3 - first);
+    }
+    for (; r >= first; --r) {
       double* yr = ys + r * W;
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       for (int w = 0; w < W; ++w) yr[w] *= inverse;
