@@ -298,11 +298,16 @@ class Heat_exponential_map
       internal::make_identity_row(heat, isolated);
       return heat;
     };
-    m_heat_local = factor_locally(heat_matrix(m_time_step), "heat");
-    if (m_separate_distance_heat)
-      m_distance_heat_local =
-          factor_locally(heat_matrix(m_distance_time_step), "distance heat", &m_heat_local);
-    prepare_pruning(heat_matrix(m_distance_time_step));
+    {
+      const internal::Sparse_matrix heat = heat_matrix(m_time_step);
+      m_heat_local = factor_locally(heat, "heat");
+      if (!m_separate_distance_heat) prepare_pruning(heat);
+    }
+    if (m_separate_distance_heat) {
+      const internal::Sparse_matrix distance_heat = heat_matrix(m_distance_time_step);
+      m_distance_heat_local = factor_locally(distance_heat, "distance heat", &m_heat_local);
+      prepare_pruning(distance_heat);
+    }
 
     // Identity rows need a zero right-hand side: isolated vertices get no
     // divergence anyway, and a pinned vertex's potential must stay 0.
@@ -421,6 +426,8 @@ class Heat_exponential_map
   // Step 1 (distance part): the heat from the source on the candidates
   // (fills ws.heat, one value per candidate).
   Solve_statistics solve_source_heat(int s, Workspace& ws) const;
+  // The same, pruned below ws.heat_drop_below (not pruned if it is 0).
+  Solve_statistics solve_source_heat_below(int s, Workspace& ws) const;
   // A guess of the smallest heat from s on `count` candidates: the scale of
   // the pruning threshold of the source-heat solve.
   double smallest_heat_guess(int s, std::size_t count) const;
@@ -574,13 +581,19 @@ class Heat_exponential_map
 
 template <class TM, class VPM, class S>
 Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat(int s, Workspace& ws) const {
+  ws.prune = prunes(s, ws.candidates.size());
+  ws.heat_drop_below =
+      ws.prune ? m_pruning_tolerance * smallest_heat_guess(s, ws.candidates.size()) : 0.0;
+  return solve_source_heat_below(s, ws);
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat_below(int s,
+                                                                          Workspace& ws) const {
   ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
   ws.heat.resize(ws.candidates.size());
   // Extendable: if the candidates are widened, only the back substitution
   // of the new candidates' supernodes is added.
-  ws.prune = prunes(s, ws.candidates.size());
-  ws.heat_drop_below =
-      ws.prune ? m_pruning_tolerance * smallest_heat_guess(s, ws.candidates.size()) : 0.0;
   if (ws.heat_drop_below == 0)
     return distance_heat().solve_extendable(ws.rhs, 1, ws.candidates.data(),
                                             ws.candidates.size(), ws.heat.data(),
@@ -634,10 +647,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::confirm_pruned_source_heat(in
     // smallest pruned value is below the true one: a threshold from it is
     // safe. Twice too bold (a region of barely positive heat): no pruning.
     ws.heat_drop_below = attempt == 0 ? m_pruning_tolerance * smallest : 0.0;
-    ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
-    stats += distance_heat().solve_extendable_pruned(ws.rhs, 1, ws.candidates.data(),
-                                                     ws.candidates.size(), ws.heat.data(),
-                                                     source_heat_workspace(ws), ws.heat_drop_below);
+    stats += solve_source_heat_below(s, ws);
     choose_region(ws.heat_row.size(), ws);
   }
   return stats;

@@ -690,7 +690,6 @@ class Localized_cholesky_solver {
                                         double* ys, const double* y, double drop_below,
                                         std::vector<int>& kept) const {
     const auto& F = m_factor;
-    const double* below = F.value.data() + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
     kept.clear();
     for (int t = 0; t < sn.nbelow; ++t)
@@ -701,23 +700,8 @@ class Localized_cholesky_solver {
       // Nothing to skip below: the register-blocked kernel of the full solve.
       backward_below<W>(sn, first, ys, y, sn.ncol);
     } else {
-      std::size_t i = 0;
-      for (; i + 4 <= kept.size(); i += 4) {
-        const double* l[4];
-        std::array<std::array<double, W>, 4> x;
-        for (int k = 0; k < 4; ++k) {
-          const int t = kept[i + static_cast<std::size_t>(k)];
-          l[k] = below + static_cast<std::size_t>(t) * sn.ncol;
-          for (int w = 0; w < W; ++w) x[k][w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
-        }
-        subtract_four_rows<W>(l, x, first, sn.ncol, ys);
-      }
-      for (; i < kept.size(); ++i) {
-        const double* l = below + static_cast<std::size_t>(kept[i]) * sn.ncol;
-        const double* xt = y + static_cast<std::size_t>(below_rows[kept[i]]) * W;
-        for (int c = first; c < sn.ncol; ++c)
-          for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * xt[w];
-      }
+      subtract_rows_below<W>(sn, first, ys, y, sn.ncol, static_cast<int>(kept.size()),
+                             [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
     }
     const double* diagonal = F.value.data() + sn.diagonal;
     int r = sn.ncol - 1;
@@ -813,21 +797,33 @@ class Localized_cholesky_solver {
   template <int W>
   void backward_below_by_rows(const Supernodal_factor::Supernode& sn, int first, double* ys,
                               const double* y, int end) const {
+    subtract_rows_below<W>(sn, first, ys, y, end, sn.nbelow, [](int i) { return i; });
+  }
+
+  // The rows below a supernode numbered `row(0)`, ..., `row(count - 1)`
+  // (ascending) subtracted from its columns [first, end), four rows at a
+  // time: backward_below_by_rows takes them all, a pruned back substitution
+  // the kept ones.
+  template <int W, class Row>
+  void subtract_rows_below(const Supernodal_factor::Supernode& sn, int first, double* ys,
+                           const double* y, int end, int count, Row row) const {
     const double* below = m_factor.value.data() + sn.below;
     const int* below_rows = m_factor.row_index.data() + sn.below_rows;
     const std::size_t stride = static_cast<std::size_t>(sn.ncol);
-    int t = 0;
-    for (; t + 4 <= sn.nbelow; t += 4) {
+    int i = 0;
+    for (; i + 4 <= count; i += 4) {
       const double* l[4];
       std::array<std::array<double, W>, 4> x;
       for (int k = 0; k < 4; ++k) {
-        l[k] = below + static_cast<std::size_t>(t + k) * stride;
-        const double* xk = y + static_cast<std::size_t>(below_rows[t + k]) * W;
+        const int t = row(i + k);
+        l[k] = below + static_cast<std::size_t>(t) * stride;
+        const double* xk = y + static_cast<std::size_t>(below_rows[t]) * W;
         for (int w = 0; w < W; ++w) x[k][w] = xk[w];
       }
       subtract_four_rows<W>(l, x, first, end, ys);
     }
-    for (; t < sn.nbelow; ++t) {
+    for (; i < count; ++i) {
+      const int t = row(i);
       const double* l = below + static_cast<std::size_t>(t) * stride;
       std::array<double, W> a;
       for (int w = 0; w < W; ++w) a[w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
