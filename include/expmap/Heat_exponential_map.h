@@ -23,6 +23,7 @@
 #include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Near_source_zone.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -207,6 +208,20 @@ class Heat_exponential_map
   /// radius 2h), beyond what `heat_quadratic_fit`'s cubic correction models
   /// (measured at m = 1: mean angle errors of 0.02-0.5 rad on spheres).
   static constexpr double min_time_factor_of_two_ring_fit = 4.0;
+
+  /// The near-source blend (`Heat_options::near_source_blend`) is stretched
+  /// by up to this factor where the surface is flat at its scale. Measured
+  /// on the accuracy study (doc/results.md, section 0): stretching 2h-6h to
+  /// 3h-9h lowers the mean angle error on every surface, regular and
+  /// jittered, and to 4h-12h lowers most but raises the regular saddle's at
+  /// h = 0.05.
+  static constexpr double max_near_source_widening = 1.5;
+  /// The normal's turn (rad) across the blend's end below which the blend
+  /// is widened (fully up to two thirds of it, not at all from it on): projected
+  /// chords are good directions where the surface is nearly flat, and fold
+  /// triangles where it bends (a blend widened everywhere added 10 of 300
+  /// patches with folds on the real meshes; doc/folds.md).
+  static constexpr double flat_blend_normal_turn = 0.5;
 
  private:
   struct Workspace {
@@ -519,8 +534,8 @@ class Heat_exponential_map
   // with the geometric direction next to the source (Near_source_blend, see
   // near_source_angle).
   double polar_angle(int s, int v, double r, const std::array<double, 2>& direction,
-                     const internal::Tangent_frame& frame,
-                     const internal::Source_one_ring& ring) const;
+                     const internal::Tangent_frame& frame, const internal::Source_one_ring& ring,
+                     const internal::Near_source_zone& zone) const;
   // The geometric direction of v next to the source: a neighbour's edge at
   // its intrinsic angle (the corner angles at s summed and rescaled to
   // 2 pi, as DGPC starts), any other vertex's chord projected onto the
@@ -530,16 +545,23 @@ class Heat_exponential_map
   // their cyclic order.
   double near_source_angle(int s, int v, const internal::Tangent_frame& frame,
                            const internal::Source_one_ring& ring) const;
-  // The weight of the heat's coordinates at heat distance r: 0 up to the
-  // blend's begin, a cubic smoothstep to 1 at its end (Near_source_blend).
-  double heat_weight(double r) const {
+  // The query's blend from geometric into heat coordinates: the options'
+  // Near_source_blend in mean edge lengths, stretched by up to
+  // max_near_source_widening where the surface is flat at the blend's scale
+  // (its normal turns by less than flat_blend_normal_turn over the blend).
+  internal::Near_source_zone near_source_zone(int s, const internal::Tangent_frame& frame) const {
     const double h_mean = m_indexed.arrays.mean_edge_length;
-    const double begin = m_options.near_source_blend.begin * h_mean;
-    const double end = m_options.near_source_blend.end * h_mean;
-    if (r >= end) return 1.0;
-    if (r <= begin) return 0.0;
-    const double x = (r - begin) / (end - begin);
-    return x * x * (3 - 2 * x);
+    internal::Near_source_zone zone{m_options.near_source_blend.begin * h_mean,
+                                    m_options.near_source_blend.end * h_mean};
+    if (zone.end > 0) {
+      const double turn = internal::normal_turn_rate(m_indexed.arrays, s, frame.normal) * zone.end;
+      const double widening =
+          turn > 0 ? std::clamp(flat_blend_normal_turn / turn, 1.0, max_near_source_widening)
+                   : max_near_source_widening;
+      zone.begin *= widening;
+      zone.end *= widening;
+    }
+    return zone;
   }
   // The distance of v at heat distance r. A neighbour of the source takes
   // its edge's length (the exact polyhedral distance, where DGPC starts),
@@ -548,8 +570,9 @@ class Heat_exponential_map
   // interpolated from these corners right next to the source. Farther
   // vertices keep r: chord lengths there cut through space on coarse curved
   // meshes and fold triangles over (doc/results.md, section 0).
-  double blended_distance(int s, int v, double r, const internal::Source_one_ring& ring) const {
-    const double w = heat_weight(r);
+  double blended_distance(int s, int v, double r, const internal::Source_one_ring& ring,
+                          const internal::Near_source_zone& zone) const {
+    const double w = zone.heat_weight(r);
     if (w == 1.0 || ring.position(v) < 0) return r;
     const double edge =
         internal::norm(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
@@ -1061,6 +1084,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                                                     const Workspace& ws, Result& result) const {
   const std::size_t width = star_columns(star);
   const bool remove_leak = m_angle_estimator == Angle_estimator::heat_quadratic_fit;
+  const internal::Near_source_zone zone = near_source_zone(s, frame);
   std::vector<double> values(star.vertices.size());
   // Step 7: the heat directions of the patch vertices (where the blend
   // wants them), then, for the quadratic fit, their cubic leak removed for
@@ -1084,7 +1108,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                               std::to_string(m_indexed.arrays.to_original(v)) +
                               " (distance " + std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
-    if (v == s || heat_weight(ws.potential[i]) == 0.0) continue;  // no heat direction needed
+    if (v == s || zone.heat_weight(ws.potential[i]) == 0.0) continue;  // no heat direction needed
     direction[p] = heat_direction(at_source, star, h, values);
     if (remove_leak && at_source > 0) {
       leaking.push_back(direction[p]);
@@ -1103,8 +1127,8 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     const int v = ws.region[i];
     if (v == s) continue;
     entries.push_back({static_cast<int>(m_indexed.arrays.to_original(v)),
-                       blended_distance(s, v, ws.potential[i], ring),
-                       polar_angle(s, v, ws.potential[i], direction[p], frame, ring)});
+                       blended_distance(s, v, ws.potential[i], ring, zone),
+                       polar_angle(s, v, ws.potential[i], direction[p], frame, ring, zone)});
   }
   Solve_statistics statistics = result.statistics;
   result = internal::assemble_local_map(static_cast<int>(m_indexed.arrays.to_original(s)), entries,
@@ -1132,8 +1156,9 @@ template <class TM, class VPM, class S>
 double Heat_exponential_map<TM, VPM, S>::polar_angle(int s, int v, double r,
                                                      const std::array<double, 2>& direction,
                                                      const internal::Tangent_frame& frame,
-                                                     const internal::Source_one_ring& ring) const {
-  const double w = heat_weight(r);
+                                                     const internal::Source_one_ring& ring,
+                                                     const internal::Near_source_zone& zone) const {
+  const double w = zone.heat_weight(r);
   if (w == 0.0) return near_source_angle(s, v, frame, ring);
   const double heat_angle = std::atan2(direction[1], direction[0]);
   if (w == 1.0) return heat_angle;
