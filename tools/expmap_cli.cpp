@@ -118,9 +118,9 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   // Short enough for the SVG caption's one line.
   d << "heat (m = " << options.time_factor << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT") << ", "
-    << expmap::to_string(options.angle_estimator) << " angles, chords to "
-    << options.near_source_blend.begin << "h, blended by " << options.near_source_blend.end
-    << "h)";
+    << expmap::to_string(options.angle_estimator) << " angles, chords "
+    << options.near_source_blend.begin << "h to " << options.near_source_blend.end
+    << "h, wider if flat)";
   return d.str();
 }
 
