@@ -69,7 +69,7 @@ inline bool is_linear_in_heat(Angle_estimator estimator) {
 /// `end` it turns smoothly (a cubic smoothstep in the distance) into the
 /// heat's direction. `end = 0` gives the paper's pure heat angles. Where
 /// the surface is flat at the blend's scale (its normal turns by less than
-/// 0.5 rad over `end` mean edge lengths), a query stretches `begin` and
+/// 1 rad over `end` mean edge lengths), a query stretches `begin` and
 /// `end` by up to 1.5x (`Heat_exponential_map::max_near_source_widening`):
 /// chords are good directions there, and fold triangles over where the
 /// surface bends.

@@ -219,9 +219,10 @@ class Heat_exponential_map
   /// The normal's turn (rad) across the blend's end below which the blend
   /// is widened (fully up to two thirds of it, not at all from it on): projected
   /// chords are good directions where the surface is nearly flat, and fold
-  /// triangles where it bends (a blend widened everywhere added 10 of 300
-  /// patches with folds on the real meshes; doc/folds.md).
-  static constexpr double flat_blend_normal_turn = 0.5;
+  /// triangles where it bends. A blend widened everywhere added 10 of 300
+  /// patches with folds on the real meshes (doc/folds.md); with this bound
+  /// none were added, with 2 rad one.
+  static constexpr double flat_blend_normal_turn = 1.0;
 
  private:
   struct Workspace {
