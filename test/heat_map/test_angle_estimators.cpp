@@ -132,6 +132,15 @@ expmap::Triangle_soup jittered_unit_sphere(int subdivisions) {
   return soup;
 }
 
+// The index arrays the library's internals work on, for a soup.
+expmap::internal::Mesh_arrays mesh_arrays_of(const expmap::Triangle_soup& soup) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(soup, mesh);
+  return expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default>(mesh,
+                                                                     get(CGAL::vertex_point, mesh))
+      .arrays;
+}
+
 // The cubic-leak fixed point, evaluated from the model of its documentation
 // (the cubic Taylor terms (g.x)^3 / 6 + (g.x) x^T Q x / 2 of the log heat),
 // not from the library's coefficient formulas: a homogeneous cubic's four
@@ -170,23 +179,20 @@ BOOST_AUTO_TEST_CASE(quadratic_fit_is_exact_for_quadratics_on_an_irregular_star)
   jitter_vertices(
       soup, 0.3, 5, [](const auto&) { return std::array<double, 3>{{0, 0, 1}}; },
       [](auto&) {});
-  Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
-  const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed(
-      mesh, get(CGAL::vertex_point, mesh));
+  const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
   const int s = 0;  // the centre of the hexagonal grid: an interior vertex
-  BOOST_TEST_REQUIRE(indexed.arrays.degree(s) == 6);
-  const auto frame = expmap::internal::tangent_frame(indexed.arrays, s, std::nullopt);
-  const auto fitted = expmap::internal::quadratic_fit_star_gradient(indexed.arrays, s, frame);
+  BOOST_TEST_REQUIRE(arrays.degree(s) == 6);
+  const auto frame = expmap::internal::tangent_frame(arrays, s, std::nullopt);
+  const auto fitted = expmap::internal::quadratic_fit_star_gradient(arrays, s, frame);
   BOOST_TEST_REQUIRE(fitted.has_value());
-  const auto linear = expmap::internal::star_gradient(indexed.arrays, s, frame);
+  const auto linear = expmap::internal::star_gradient(arrays, s, frame);
 
   // f = 3 + 2x - y + 5x^2 - 4xy + 7y^2 in the frame's coordinates about s:
   // grad f(s) = (2, -1).
   std::vector<double> values;
   for (int v : fitted->vertices) {
-    const auto& pv = indexed.arrays.point[v];
-    const auto& ps = indexed.arrays.point[s];
+    const auto& pv = arrays.point[v];
+    const auto& ps = arrays.point[s];
     const expmap::internal::Vector3 d{{pv[0] - ps[0], pv[1] - ps[1], pv[2] - ps[2]}};
     const double x = expmap::internal::dot(d, frame.e1), y = expmap::internal::dot(d, frame.e2);
     values.push_back(3 + 2 * x - y + 5 * x * x - 4 * x * y + 7 * y * y);
@@ -451,13 +457,10 @@ BOOST_AUTO_TEST_CASE(small_time_factors_take_the_logarithmic_fit) {
 // near-source blend reaches: 1/R on spheres of radius R, 0 on a plane.
 BOOST_AUTO_TEST_CASE(normal_turn_rate_is_the_inverse_radius_on_spheres) {
   for (double radius : {0.5, 2.0, 10.0}) {
-    Surface_mesh mesh;
-    expmap::soup_to_mesh(expmap::make_icosphere(4, radius), mesh);
-    const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed(
-        mesh, get(CGAL::vertex_point, mesh));
+    const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(expmap::make_icosphere(4, radius));
     for (int s : {0, 100, 2000}) {
-      const auto normal = expmap::internal::vertex_normal(indexed.arrays, s);
-      const double rate = expmap::internal::normal_turn_rate(indexed.arrays, s, normal);
+      const auto normal = expmap::internal::vertex_normal(arrays, s);
+      const double rate = expmap::internal::normal_turn_rate(arrays, s, normal);
       BOOST_TEST_CONTEXT("radius " << radius << ", vertex " << s) {
         // Vertex normals (mean curvature normals) of the icosphere deviate
         // a little from the radial direction, most at its valence-5
@@ -466,11 +469,8 @@ BOOST_AUTO_TEST_CASE(normal_turn_rate_is_the_inverse_radius_on_spheres) {
       }
     }
   }
-  Surface_mesh plane;
-  expmap::soup_to_mesh(expmap::make_equilateral_grid(4, 0.1), plane);
-  const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> flat(
-      plane, get(CGAL::vertex_point, plane));
-  BOOST_TEST(expmap::internal::normal_turn_rate(flat.arrays, 0, {{0, 0, 1}}) < 1e-12);
+  const expmap::internal::Mesh_arrays flat = mesh_arrays_of(expmap::make_equilateral_grid(4, 0.1));
+  BOOST_TEST(expmap::internal::normal_turn_rate(flat, 0, {{0, 0, 1}}) < 1e-12);
 }
 
 // Where the surface is flat, the near-source blend is widened by
@@ -486,9 +486,7 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
   expmap::soup_to_mesh(soup, mesh);
   using Heat = expmap::Heat_exponential_map<Surface_mesh>;
   const Heat heat(mesh);
-  const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed(
-      mesh, get(CGAL::vertex_point, mesh));
-  const double h = indexed.arrays.mean_edge_length;
+  const double h = mesh_arrays_of(soup).mean_edge_length;
   const auto map = heat.compute_by_index(0, expmap::Patch::geodesic_radius(14 * h));
   const expmap::Heat_options defaults;
   const double begin = defaults.near_source_blend.begin * h;
