@@ -48,6 +48,7 @@ struct Compute_arguments {
   std::optional<std::size_t> vertex_count;
   std::string method = "heat";
   std::optional<double> time_factor;
+  std::optional<double> distance_time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
@@ -222,6 +223,12 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       a.time_factor = parse_real(name, text);
       if (!(*a.time_factor > 0))
         throw Usage_error("--time-factor must be positive (got " + text + ")");
+    } else if (name == "--distance-time-factor") {
+      once(a.distance_time_factor.has_value());
+      const std::string text = take_value();
+      a.distance_time_factor = parse_real(name, text);
+      if (!(*a.distance_time_factor > 0))
+        throw Usage_error("--distance-time-factor must be positive (got " + text + ")");
     } else if (name == "--laplacian") {
       once(a.laplacian.has_value());
       a.laplacian = take_value();

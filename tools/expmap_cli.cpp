@@ -85,6 +85,7 @@ using Heat = expmap::Heat_exponential_map<Mesh>;
 expmap::Heat_options heat_options(const Compute_arguments& a) {
   expmap::Heat_options options;
   if (a.time_factor) options.time_factor = *a.time_factor;
+  if (a.distance_time_factor) options.distance_time_factor = *a.distance_time_factor;
   if (a.laplacian == std::string("intrinsic-delaunay"))
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
@@ -116,7 +117,10 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   const expmap::Heat_options options = heat_options(a);
   std::ostringstream d;
   // Short enough for the SVG caption's one line.
-  d << "heat (m = " << options.time_factor << ", "
+  d << "heat (m = " << options.time_factor;
+  if (options.distance_time_factor && *options.distance_time_factor != options.time_factor)
+    d << ", distance m = " << *options.distance_time_factor;
+  d << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT") << ", "
     << expmap::to_string(options.angle_estimator) << " angles, chords "
     << options.near_source_blend.begin << "h to " << options.near_source_blend.end
@@ -254,7 +258,7 @@ struct Method {
   const char* name;
   const char* summary;      // for --help
   const char* description;  // for the summary and the SVG caption (heat adds its settings)
-  bool takes_heat_options;  // --time-factor, --laplacian and --angles
+  bool takes_heat_options;  // --time-factor, --laplacian, --angles and the like
   Run (*run)(const Mesh&, const Compute_arguments&, Mesh::Vertex_index, const expmap::Patch&,
              const expmap::Query_options&);
   Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const std::vector<std::size_t>&,
@@ -328,6 +332,12 @@ std::string map_options_help() {
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
+       "  --distance-time-factor T  heat only: a diffusion time of its own for the\n"
+       "                       distance (one more factorization); --time-factor then\n"
+       "                       sets the angles' time. --time-factor 50\n"
+       "                       --distance-time-factor 10 gives more accurate angles on\n"
+       "                       finely meshed smooth surfaces (doc/time_factor.md)\n"
+       "                       (default: the --time-factor)\n"
        "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
@@ -361,8 +371,9 @@ std::string map_options_help() {
 
 std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-         "                      [--method M] [--time-factor T] [--laplacian L] [--angles A]\n"
-         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
+         "                      [--method M] [--time-factor T] [--distance-time-factor T]\n"
+         "                      [--laplacian L] [--angles A] [--near-source-blend B,E]\n"
+         "                      [--reference X,Y,Z]\n"
          "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
@@ -386,7 +397,8 @@ std::string compute_help() {
 std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--laplacian L] [--angles A] [--near-source-blend B,E]\n"
+         "                    [--distance-time-factor T] [--laplacian L] [--angles A]\n"
+         "                    [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
          "                    -o OUT [-o OUT ...]\n"
          "\n"
@@ -508,8 +520,11 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 // costly part: its settings apply to it, and the outputs' folders exist.
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
-  if (!method.takes_heat_options && (a.time_factor || a.laplacian || a.angles))
-    throw Usage_error("--time-factor, --laplacian and --angles apply only to --method heat");
+  if (!method.takes_heat_options && (a.time_factor || a.distance_time_factor || a.laplacian ||
+                                     a.angles || a.near_source_blend))
+    throw Usage_error(
+        "--time-factor, --distance-time-factor, --laplacian, --angles and --near-source-blend "
+        "apply only to --method heat");
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))

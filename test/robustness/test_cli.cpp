@@ -185,6 +185,36 @@ BOOST_AUTO_TEST_CASE(every_angle_estimator_answers) {
   }
 }
 
+// Column `k` of every data row of a map CSV (vertex,r,theta,u,v).
+std::vector<std::string> csv_column(const fs::path& path, int k) {
+  std::vector<std::string> column;
+  const std::vector<std::string> lines = read_lines(path);
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::istringstream row(lines[i]);
+    std::string field;
+    for (int j = 0; j <= k; ++j) std::getline(row, field, ',');
+    column.push_back(field);
+  }
+  return column;
+}
+
+BOOST_AUTO_TEST_CASE(a_distance_time_factor_keeps_the_distances_of_that_time) {
+  // Angles from t = 50 h^2 with distances from t = 10 h^2: the distances
+  // are those of the default (m = 10), not those of m = 50.
+  const std::string query = "compute " + file("grid.off") + " --source 24 --vertices 20";
+  BOOST_TEST_REQUIRE(run(query + " -o " + file("m10.csv")) == 0, "stderr: " << err());
+  BOOST_TEST_REQUIRE(
+      run(query + " --time-factor 50 --distance-time-factor 10 -o " + file("split.csv")) == 0,
+      "stderr: " << err());
+  BOOST_TEST(out().find("distance m = 10") != std::string::npos, out());
+  BOOST_TEST_REQUIRE(run(query + " --time-factor 50 -o " + file("m50.csv")) == 0,
+                     "stderr: " << err());
+  const auto m10 = csv_column(dir / "m10.csv", 1);
+  BOOST_TEST_REQUIRE(m10.size() == 20u);
+  BOOST_TEST(csv_column(dir / "split.csv", 1) == m10, boost::test_tools::per_element());
+  BOOST_TEST((csv_column(dir / "m50.csv", 1) != m10));
+}
+
 BOOST_AUTO_TEST_CASE(polygon_meshes_are_triangulated_by_default) {
   for (const char* flag : {"", " --triangulate"}) {
     const int status = run("compute " + file("quads.off") + flag + " --source 1 --fraction 1 -o " +
@@ -200,8 +230,8 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--laplacian", "--angles", "--near-source-blend", "--reference", "--no-triangulate",
-        "--repair", "--output"})
+        "--distance-time-factor", "--laplacian", "--angles", "--near-source-blend", "--reference",
+        "--no-triangulate", "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
@@ -226,6 +256,9 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
   check_error(grid + " --source 0 --vertices 10 --method no-such-method" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --angles sideways" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dem --angles quadratic-fit" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --distance-time-factor 0" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dgpc --distance-time-factor 1" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dem --near-source-blend 1,2" + csv, 2);
   check_error(grid + " --source 0 --radius", 2);
   check_error(grid + " --source 0 --vertices 10", 2);
   check_error("", 2);
@@ -378,7 +411,8 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
-        "--time-factor", "--laplacian", "--angles", "--near-source-blend", "--reference",
+        "--time-factor", "--distance-time-factor", "--laplacian", "--angles",
+        "--near-source-blend", "--reference",
         "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
   BOOST_TEST_REQUIRE(run("--help") == 0);
