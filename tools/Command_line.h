@@ -192,6 +192,13 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       return args[++i];
     };
     auto once = [&](bool given) { check_once(name, given); };
+    // A real option that must be positive (given at most once).
+    auto positive_real = [&](std::optional<double>& field) {
+      once(field.has_value());
+      const std::string text = take_value();
+      field = parse_real(name, text);
+      if (!(*field > 0)) throw Usage_error(name + " must be positive (got " + text + ")");
+    };
 
     if (name == "-h" || name == "--help") {
       a.help = true;
@@ -199,10 +206,7 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
     } else if (own(name, take_value)) {
       continue;
     } else if (name == "--radius") {
-      once(a.radius.has_value());
-      const std::string text = take_value();
-      a.radius = parse_real(name, text);
-      if (!(*a.radius > 0)) throw Usage_error("--radius must be positive (got " + text + ")");
+      positive_real(a.radius);
     } else if (name == "--fraction") {
       once(a.fraction.has_value());
       const std::string text = take_value();
@@ -218,17 +222,9 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       a.method = take_value();
       method_given = true;
     } else if (name == "--time-factor") {
-      once(a.time_factor.has_value());
-      const std::string text = take_value();
-      a.time_factor = parse_real(name, text);
-      if (!(*a.time_factor > 0))
-        throw Usage_error("--time-factor must be positive (got " + text + ")");
+      positive_real(a.time_factor);
     } else if (name == "--distance-time-factor") {
-      once(a.distance_time_factor.has_value());
-      const std::string text = take_value();
-      a.distance_time_factor = parse_real(name, text);
-      if (!(*a.distance_time_factor > 0))
-        throw Usage_error("--distance-time-factor must be positive (got " + text + ")");
+      positive_real(a.distance_time_factor);
     } else if (name == "--laplacian") {
       once(a.laplacian.has_value());
       a.laplacian = take_value();
