@@ -486,7 +486,7 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
   expmap::soup_to_mesh(soup, mesh);
   using Heat = expmap::Heat_exponential_map<Surface_mesh>;
   const Heat heat(mesh);
-  const double h = mesh_arrays_of(soup).mean_edge_length;
+  const double h = heat.mean_edge_length();
   const auto map = heat.compute_by_index(0, expmap::Patch::geodesic_radius(14 * h));
   const expmap::Heat_options defaults;
   const double begin = defaults.near_source_blend.begin * h;

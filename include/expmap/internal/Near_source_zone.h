@@ -5,9 +5,9 @@
 
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/Vector3.h>
 
-#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -35,13 +35,7 @@ struct Near_source_zone {
 /// 1 / R on a sphere of radius R; on a general surface about the larger
 /// principal curvature. `normal_at_s` is the vertex normal of s.
 inline double normal_turn_rate(const Mesh_arrays& m, int s, const Vector3& normal_at_s) {
-  std::vector<int> ring{s};
-  for (int p = m.neighbor_start[s]; p < m.neighbor_start[s + 1]; ++p) ring.push_back(m.neighbor[p]);
-  const std::size_t one_ring = ring.size();
-  for (std::size_t c = 1; c < one_ring; ++c)
-    for (int p = m.neighbor_start[ring[c]]; p < m.neighbor_start[ring[c] + 1]; ++p)
-      if (std::find(ring.begin(), ring.end(), m.neighbor[p]) == ring.end())
-        ring.push_back(m.neighbor[p]);
+  const std::vector<int> ring = ring_neighborhood(m.neighbor_start, m.neighbor, s, 2);
   double sum = 0;
   int count = 0;
   for (std::size_t c = 1; c < ring.size(); ++c) {

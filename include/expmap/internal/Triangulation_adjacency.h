@@ -52,16 +52,24 @@ inline Vertex_adjacency vertex_adjacency(const Intrinsic_triangulation& tri) {
 }
 
 /// s, then its neighbours, then (if `rings` is 2) their other neighbours:
-/// the vertices within `rings` edges of s, nearest ring first.
-inline std::vector<int> ring_neighborhood(const Vertex_adjacency& a, int s, int rings) {
+/// the vertices within `rings` edges of s, nearest ring first. `start` and
+/// `neighbor` are compressed rows of any vertex adjacency (a
+/// `Vertex_adjacency`'s, or the input mesh's in `Mesh_arrays`).
+inline std::vector<int> ring_neighborhood(const std::vector<int>& start,
+                                          const std::vector<int>& neighbor, int s, int rings) {
   std::vector<int> vertices{s};
-  vertices.insert(vertices.end(), a.begin(s), a.end(s));
+  vertices.insert(vertices.end(), neighbor.begin() + start[s], neighbor.begin() + start[s + 1]);
   if (rings < 2) return vertices;
   const std::size_t one_ring = vertices.size();
   for (std::size_t c = 1; c < one_ring; ++c)
-    for (const int* w = a.begin(vertices[c]); w != a.end(vertices[c]); ++w)
-      if (std::find(vertices.begin(), vertices.end(), *w) == vertices.end()) vertices.push_back(*w);
+    for (int p = start[vertices[c]]; p < start[vertices[c] + 1]; ++p)
+      if (std::find(vertices.begin(), vertices.end(), neighbor[p]) == vertices.end())
+        vertices.push_back(neighbor[p]);
   return vertices;
+}
+
+inline std::vector<int> ring_neighborhood(const Vertex_adjacency& a, int s, int rings) {
+  return ring_neighborhood(a.start, a.neighbor, s, rings);
 }
 
 }  // namespace internal
