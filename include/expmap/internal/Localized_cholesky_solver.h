@@ -15,10 +15,13 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace expmap {
@@ -100,6 +103,17 @@ class Localized_cholesky_solver {
     // extension, and the supernodes the extension adds.
     int m_open_width = 0, m_open_columns = 0;
     std::vector<int> m_previous_entry, m_extension_nodes;
+    // An open solve_largest: the supernodes not visited yet whose parents
+    // were, as a heap of (bound, supernode); the values solved, counted by
+    // bucket (value_bucket), those in the buckets touched; the lowest bucket
+    // whose values are counted as above the bounds left, and how many
+    // values that is; how many values were written.
+    bool m_largest_open = false;
+    std::vector<std::pair<double, int>> m_frontier;
+    std::vector<std::uint32_t> m_bucket_count;
+    std::size_t m_buckets_touched_from = 0, m_buckets_touched_to = 0;
+    std::size_t m_bucket_floor = 0, m_values_above = 0, m_largest_values = 0;
+    double m_largest_drop_below = 0;  // its pruning (0: none)
     std::uint32_t m_stamp = 0;
     int m_size = -1;
   };
@@ -116,6 +130,7 @@ class Localized_cholesky_solver {
         m_inverse_diagonal[sn.first_column + c] =
             1.0 / m_factor.value[sn.diagonal + Supernodal_factor::triangle_row(c) + c];
     compute_tree_height();
+    compute_children();
   }
 
   int size() const { return m_factor.size; }
@@ -200,6 +215,7 @@ class Localized_cholesky_solver {
     if (ws.m_open_width == 0) return;
     with_open_width(ws, [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
+    ws.m_largest_open = false;
   }
 
   /// As `solve()`, but an entry of the forward solution y (L y = P b) or of
@@ -272,6 +288,97 @@ class Localized_cholesky_solver {
     double smallest = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < count; ++i) smallest = std::min(smallest, std::abs(values[i]));
     return smallest;
+  }
+
+  /// The `count` largest values of the solution x of A x = b in the parts
+  /// of A (its connected components) that b touches, found by a back
+  /// substitution that
+  /// visits the elimination tree largest first and stops where nothing
+  /// larger can remain; the values are those of a full solve. Writes every
+  /// row it solved (the supernodes visited, in whole) to `rows` and its
+  /// value to `values` (cleared first), in the order solved: the `count`
+  /// largest among them (or all of those parts, if they have fewer rows)
+  /// are the largest there. The solve stays open for `extend_largest()`
+  /// (and `extend()`) until the next solve on `ws` or `release()`.
+  ///
+  /// Why it may stop early: A must be an M-matrix with nonnegative row sums
+  /// (positive diagonal, no positive off-diagonal entry, such as the heat
+  /// matrix M + tL of an intrinsic Delaunay Laplacian) and b nonnegative
+  /// with one column. The rows of a supernode's subtree S that b does not
+  /// touch satisfy A_SS x_S = -A_SR x_R, where R, the rows of A coupled to
+  /// S from outside, lie among the supernode's rows below its diagonal
+  /// block (the structure of L); -A_SS^-1 A_SR is nonnegative with row
+  /// sums at most 1, so x on S is at most the largest x on those rows
+  /// (the discrete maximum principle). A subtree whose rows below hold
+  /// nothing larger than the `count`-th value found holds nothing larger
+  /// either, and is not visited. The caller vouches for the matrix: this
+  /// is not checked here.
+  ///
+  /// With `drop_below` > 0 both substitutions are pruned as `solve_pruned()`
+  /// prunes them: pruning only lowers the values of a nonnegative inverse,
+  /// by about `drop_below` at most, so the bounds and the order of the
+  /// values are those of a full solve but for ties within that.
+  /// \pre every entry of b nonnegative, in column 0; drop_below >= 0 and
+  /// finite.
+  Solve_statistics solve_largest(const std::vector<Rhs_entry>& entries, std::size_t count,
+                                 std::vector<int>& rows, std::vector<double>& values,
+                                 Workspace& ws, double drop_below = 0) const {
+    check_drop_below(drop_below);
+    for (const Rhs_entry& e : entries)
+      if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
+        throw std::invalid_argument(
+            "Localized_cholesky_solver: solve_largest needs one nonnegative column");
+    const auto start = std::chrono::steady_clock::now();
+    prepare(ws);
+    const std::uint32_t s = ws.next_stamp();
+    double* y = ws.m_block;
+    for (const Rhs_entry& e : entries)
+      y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
+    ws.m_largest_drop_below = drop_below;
+    Solve_statistics stats =
+        forward_substitution<1>(entries, ws, s, Pruning{drop_below > 0, drop_below});
+    ws.m_backward_nodes.clear();
+    ws.m_frontier.clear();
+    for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
+      if (m_factor.supernode[k].parent == -1)
+        ws.m_frontier.push_back({std::numeric_limits<double>::infinity(), k});
+    ws.m_open_width = 1;
+    ws.m_open_columns = 1;
+    ws.m_largest_open = true;
+    if (ws.m_bucket_count.size() != value_buckets) {
+      ws.m_bucket_count.assign(value_buckets, 0);
+      ws.m_buckets_touched_to = 0;
+    }
+    std::fill(ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(ws.m_buckets_touched_from),
+              ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(
+                  std::max(ws.m_buckets_touched_from, ws.m_buckets_touched_to)),
+              0u);
+    ws.m_buckets_touched_from = value_buckets;
+    ws.m_buckets_touched_to = 0;
+    ws.m_bucket_floor = value_buckets;
+    ws.m_values_above = 0;
+    rows.clear();
+    values.clear();
+    stats += largest_first(count, rows, values, ws);
+    stats.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
+
+  /// Continues the last `solve_largest()` on `ws` until the `count` largest
+  /// values are known, appending the rows it solves to `rows` and `values`
+  /// (which must hold what the earlier calls wrote).
+  /// \pre `ws` holds an open `solve_largest()` (else std::logic_error).
+  Solve_statistics extend_largest(std::size_t count, std::vector<int>& rows,
+                                  std::vector<double>& values, Workspace& ws) const {
+    if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
+        ws.m_largest_values != rows.size())
+      throw std::logic_error("Localized_cholesky_solver: extend_largest() without solve_largest()");
+    const auto start = std::chrono::steady_clock::now();
+    Solve_statistics stats = largest_first(count, rows, values, ws);
+    stats.solve_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
   }
 
  private:
@@ -408,6 +515,113 @@ class Localized_cholesky_solver {
     std::reverse(order.begin(), order.end());
   }
 
+  // Forward: L y = b over the ancestors of the nonzeros of b (scattered
+  // into the block already); finds them first, stamped `s`.
+  template <int W>
+  Solve_statistics forward_substitution(const std::vector<Rhs_entry>& entries, Workspace& ws,
+                                        std::uint32_t s, Pruning pruning) const {
+    const auto& F = m_factor;
+    double* y = ws.m_block;
+    Solve_statistics stats;
+    reach(entries.data(), entries.data() + entries.size(),
+          [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; }, ws.m_forward_stamp,
+          ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
+    for (const int k : ws.m_forward_nodes) {
+      const auto& sn = F.supernode[k];
+      const int first = ws.m_forward_entry[k];
+      double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
+      stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
+      if (pruning.enabled) {
+        stats.factor_entries +=
+            forward_supernode_pruned<W>(sn, first, ys, y, pruning.drop_below, ws.m_kept);
+        continue;
+      }
+      forward_supernode<W>(sn, first, ys, y);
+      stats.factor_entries += entries_of(sn, first);
+    }
+    return stats;
+  }
+
+  // The bucket of a value for counting the values above a bound: its
+  // exponent and three leading mantissa bits (nonpositive values in 0), so
+  // larger values have higher (or equal) buckets.
+  static constexpr std::size_t value_buckets = std::size_t{1} << 14;
+  static std::size_t value_bucket(double value) {
+    if (!(value > 0)) return 0;
+    std::uint64_t bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    return static_cast<std::size_t>(bits >> 49);
+  }
+
+  // The back substitution of solve_largest: pops the frontier's supernode
+  // with the largest bound (the largest solved value among its rows below;
+  // infinity on the right-hand side's paths, where the bound does not hold)
+  // until the `count`-th largest value solved exceeds every bound left,
+  // solving each popped supernode in whole and pushing its children.
+  Solve_statistics largest_first(std::size_t count, std::vector<int>& rows,
+                                 std::vector<double>& values, Workspace& ws) const {
+    const auto& F = m_factor;
+    double* y = ws.m_block;
+    const std::uint32_t s = ws.m_stamp;
+    auto& frontier = ws.m_frontier;
+    Solve_statistics stats;
+    // Settled once `count` values exceed every bound left. The values are
+    // counted in buckets of an eighth of a binade and a value counts as
+    // exceeding a bound only if its bucket is higher, so the search may go
+    // on up to a bucket longer than it must, never shorter; with it, no
+    // selection over the values is needed. Bounds only fall from pop to pop
+    // (a child's rows below are its parent's rows or rows below), so the
+    // count above the bounds only grows.
+    auto settled = [&](double bound) {
+      if (count == 0) return true;
+      if (!(bound < std::numeric_limits<double>::infinity())) return false;
+      for (const std::size_t b = value_bucket(bound) + 1; ws.m_bucket_floor > b;)
+        ws.m_values_above += ws.m_bucket_count[--ws.m_bucket_floor];
+      return ws.m_values_above >= count;
+    };
+    while (!frontier.empty() && !settled(frontier.front().first)) {
+      std::pop_heap(frontier.begin(), frontier.end());
+      const int k = frontier.back().second;
+      frontier.pop_back();
+      const auto& sn = F.supernode[k];
+      double* ys = y + static_cast<std::size_t>(sn.first_column);
+      stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
+      if (ws.m_largest_drop_below > 0) {
+        stats.factor_entries +=
+            backward_supernode_pruned<1>(sn, 0, ys, y, ws.m_largest_drop_below, ws.m_kept);
+      } else {
+        backward_supernode<1>(sn, 0, ys, y);
+        stats.factor_entries += entries_of(sn, 0);
+      }
+      ws.m_backward_stamp[k] = s;
+      ws.m_backward_entry[k] = 0;
+      ws.m_backward_nodes.push_back(k);
+      for (int c = 0; c < sn.ncol; ++c) {
+        rows.push_back(F.permutation[sn.first_column + c]);
+        values.push_back(ys[c]);
+        const std::size_t b = value_bucket(ys[c]);
+        ++ws.m_bucket_count[b];
+        ws.m_buckets_touched_from = std::min(ws.m_buckets_touched_from, b);
+        ws.m_buckets_touched_to = std::max(ws.m_buckets_touched_to, b + 1);
+        if (b >= ws.m_bucket_floor) ++ws.m_values_above;
+      }
+      for (int q = m_child_start[k]; q < m_child_start[k + 1]; ++q) {
+        const int child = m_child[q];
+        double bound = std::numeric_limits<double>::infinity();
+        if (ws.m_forward_stamp[child] != s) {
+          const auto& cn = F.supernode[child];
+          const int* below = F.row_index.data() + cn.below_rows;
+          bound = -std::numeric_limits<double>::infinity();
+          for (int t = 0; t < cn.nbelow; ++t) bound = std::max(bound, y[below[t]]);
+        }
+        frontier.push_back({bound, child});
+        std::push_heap(frontier.begin(), frontier.end());
+      }
+    }
+    ws.m_largest_values = values.size();
+    return stats;
+  }
+
   template <int W>
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
@@ -415,28 +629,11 @@ class Localized_cholesky_solver {
     const auto& F = m_factor;
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
     auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
-    Solve_statistics stats;
 
-    // Scatter b (permuted) into the block and find the forward supernodes.
+    // Scatter b (permuted) into the block, then forward.
     const std::uint32_t s = ws.next_stamp();
     for (const Rhs_entry& e : entries) row_of(F.inverse_permutation[e.row])[e.column] += e.value;
-    reach(entries.data(), entries.data() + entries.size(),
-          [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; }, ws.m_forward_stamp,
-          ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
-
-    // Forward: L y = b over the ancestors of the nonzeros of b.
-    for (const int k : ws.m_forward_nodes) {
-      const auto& sn = F.supernode[k];
-      const int first = ws.m_forward_entry[k];
-      stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (pruning.enabled) {
-        stats.factor_entries += forward_supernode_pruned<W>(sn, first, row_of(sn.first_column), y,
-                                                            pruning.drop_below, ws.m_kept);
-        continue;
-      }
-      forward_supernode<W>(sn, first, row_of(sn.first_column), y);
-      stats.factor_entries += entries_of(sn, first);
-    }
+    Solve_statistics stats = forward_substitution<W>(entries, ws, s, pruning);
 
     // Backward: L^T x = y over the ancestors of the requested rows, in place.
     reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
@@ -853,8 +1050,23 @@ class Localized_cholesky_solver {
     }
   }
 
+  // The children of every supernode, compressed: those of k are
+  // m_child[m_child_start[k] .. m_child_start[k + 1]).
+  void compute_children() {
+    const auto& sns = m_factor.supernode;
+    m_child_start.assign(sns.size() + 1, 0);
+    for (const auto& sn : sns)
+      if (sn.parent != -1) ++m_child_start[static_cast<std::size_t>(sn.parent) + 1];
+    for (std::size_t k = 0; k < sns.size(); ++k) m_child_start[k + 1] += m_child_start[k];
+    m_child.resize(static_cast<std::size_t>(m_child_start.back()));
+    std::vector<int> next(m_child_start.begin(), m_child_start.end() - 1);
+    for (std::size_t k = 0; k < sns.size(); ++k)
+      if (sns[k].parent != -1) m_child[static_cast<std::size_t>(next[sns[k].parent]++)] = static_cast<int>(k);
+  }
+
   Supernodal_factor m_factor;
   std::vector<double> m_inverse_diagonal;  // 1 / L(j, j)
+  std::vector<int> m_child_start, m_child;
   int m_tree_height = 0;
 };
 
