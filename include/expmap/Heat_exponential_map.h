@@ -391,20 +391,24 @@ class Heat_exponential_map
   // nonnegative, so pruning can only lower values and a too-bold threshold
   // shows in the smallest value returned. Its diagonal bounds the heat at
   // the source from below: (A^-1)_ss >= 1 / A_ss for any SPD matrix.
+  // The same property lets the source-heat solve find the hottest vertices
+  // largest first (Localized_cholesky_solver::solve_largest).
   void prepare_pruning(const internal::Sparse_matrix& A) {
     m_pruning_tolerance = 0;
     m_inverse_heat_diagonal.clear();
-    if (m_options.pruning_tolerance == 0) return;
     const Eigen::VectorXd diagonal = A.diagonal();
     // Interior edges of an intrinsic Delaunay triangulation have
     // nonnegative cotan weights (up to its flip slack, 1e-12, and rounding);
     // a boundary edge opposite an obtuse angle has a negative one, and then
-    // the heat solves are not pruned.
+    // the heat solves are neither pruned nor largest first.
+    m_distance_heat_is_m_matrix = false;
     for (int k = 0; k < A.outerSize(); ++k)
       for (internal::Sparse_matrix::InnerIterator it(A, k); it; ++it)
         if (it.row() != it.col() &&
             it.value() > 1e-12 * std::sqrt(diagonal[it.row()] * diagonal[k]))
           return;
+    m_distance_heat_is_m_matrix = true;
+    if (m_options.pruning_tolerance == 0) return;
     m_inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
     for (int v = 0; v < A.rows(); ++v) m_inverse_heat_diagonal[v] = 1.0 / diagonal[v];
     m_pruning_tolerance = m_options.pruning_tolerance;
@@ -454,9 +458,25 @@ class Heat_exponential_map
   // Checks a pruned source-heat solve's threshold against the heat of the
   // chosen region; solves again (and chooses the region again) if it was
   // above the tolerance times the region's smallest heat.
-  Solve_statistics confirm_pruned_source_heat(int s, Workspace& ws) const;
+  // (`largest_first`: the solve was solve_hottest_source_heat's.)
+  Solve_statistics confirm_pruned_source_heat(int s, bool largest_first, Workspace& ws) const;
   // The same heat on the candidates after they were widened.
   Solve_statistics extend_source_heat(Workspace& ws) const;
+  // Step 1 (distance part) without breadth-first candidates: the heat from
+  // the source solved largest first (Localized_cholesky_solver::
+  // solve_largest) until the `kept` hottest vertices of the component are
+  // known; the candidates are the vertices solved, the source first.
+  // Pruned below ws.heat_drop_below (not pruned if it is 0).
+  Solve_statistics solve_hottest_source_heat(int s, std::size_t kept, Workspace& ws) const;
+  // The same solve continued until the `kept` hottest are known (a retry).
+  Solve_statistics extend_hottest_source_heat(std::size_t kept, Workspace& ws) const;
+  // Whether a query finds its region largest first: for patches given by a
+  // vertex count, if the matrix allows it.
+  bool finds_region_largest_first(const Patch& patch) const {
+    const bool by_count = patch.kind() == Patch::Kind::fraction ||
+                          patch.kind() == Patch::Kind::vertex_count;
+    return by_count && m_distance_heat_is_m_matrix;
+  }
   internal::Localized_cholesky_solver::Workspace& source_heat_workspace(Workspace& ws) const {
     return m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
   }
@@ -597,6 +617,7 @@ class Heat_exponential_map
   double m_time_step = 0, m_distance_time_step = 0;
   bool m_separate_distance_heat = false;
   double m_pruning_tolerance = 0;  // Heat_options::pruning_tolerance, 0 if the matrix forbids it
+  bool m_distance_heat_is_m_matrix = false;  // see prepare_pruning
   std::vector<double> m_inverse_heat_diagonal;  // 1 / A_vv of the distance-heat matrix, if pruning
   Angle_estimator m_angle_estimator = Angle_estimator::heat_quadratic_fit;  // see angle_estimator()
   internal::Localized_cholesky_solver m_heat_local, m_distance_heat_local, m_poisson_local;
@@ -659,8 +680,8 @@ double Heat_exponential_map<TM, VPM, S>::smallest_heat_guess(int s, std::size_t 
 }
 
 template <class TM, class VPM, class S>
-Solve_statistics Heat_exponential_map<TM, VPM, S>::confirm_pruned_source_heat(int s,
-                                                                             Workspace& ws) const {
+Solve_statistics Heat_exponential_map<TM, VPM, S>::confirm_pruned_source_heat(
+    int s, bool largest_first, Workspace& ws) const {
   Solve_statistics stats;
   for (int attempt = 0; ws.heat_drop_below > 0; ++attempt) {
     double smallest = std::numeric_limits<double>::infinity();
@@ -671,8 +692,9 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::confirm_pruned_source_heat(in
     // smallest pruned value is below the true one: a threshold from it is
     // safe. Twice too bold (a region of barely positive heat): no pruning.
     ws.heat_drop_below = attempt == 0 ? m_pruning_tolerance * smallest : 0.0;
-    stats += solve_source_heat_below(s, ws);
-    choose_region(ws.heat_row.size(), ws);
+    const std::size_t kept = ws.heat_row.size();
+    stats += largest_first ? solve_hottest_source_heat(s, kept, ws) : solve_source_heat_below(s, ws);
+    choose_region(kept, ws);
   }
   return stats;
 }
@@ -682,6 +704,25 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::extend_source_heat(Workspace&
   ws.heat.resize(ws.candidates.size());
   return distance_heat().extend(ws.candidates.data(), ws.candidates.size(), ws.heat.data(),
                                 source_heat_workspace(ws));
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_hottest_source_heat(
+    int s, std::size_t kept, Workspace& ws) const {
+  ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
+  const Solve_statistics stats = distance_heat().solve_largest(
+      ws.rhs, kept, ws.candidates, ws.heat, source_heat_workspace(ws), ws.heat_drop_below);
+  // choose_region wants the source first.
+  const auto at = std::find(ws.candidates.begin(), ws.candidates.end(), s) - ws.candidates.begin();
+  std::swap(ws.candidates[0], ws.candidates[static_cast<std::size_t>(at)]);
+  std::swap(ws.heat[0], ws.heat[static_cast<std::size_t>(at)]);
+  return stats;
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::extend_hottest_source_heat(
+    std::size_t kept, Workspace& ws) const {
+  return distance_heat().extend_largest(kept, ws.candidates, ws.heat, source_heat_workspace(ws));
 }
 
 template <class TM, class VPM, class S>
@@ -990,20 +1031,42 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
                              patch.kind() == Patch::Kind::vertex_count;
   const std::size_t hottest_inside =
       static_cast<std::size_t>(std::ceil(margin * margin * static_cast<double>(target)));
+  const bool largest_first = finds_region_largest_first(patch);
   for (double growth = m_options.region_growth;; growth *= 2) {
     const bool retry = growth > m_options.region_growth;
-    grow_candidates(s, patch, target, wanted, growth, candidate_excess, *ws);
-    bool whole_component = ws->candidates.size() == component;
-    // A retry extends the first attempt's heat to its larger candidates.
-    result.statistics += retry ? extend_source_heat(*ws) : solve_source_heat(s, *ws);
-    const std::size_t kept =
-        whole_component ? ws->candidates.size()
-                        : static_cast<std::size_t>(std::ceil(
-                              static_cast<double>(ws->candidates.size()) / candidate_excess));
-    choose_region(kept, *ws);
-    if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws))
-      result.statistics += widen_candidates(target, growth, kept, component, whole_component, *ws);
-    result.statistics += confirm_pruned_source_heat(s, *ws);
+    bool whole_component = false;
+    if (largest_first) {
+      // The region is the hottest vertices of the component: no candidates
+      // to cut it short. A retry continues the first attempt's solve.
+      const std::size_t kept = std::min(
+          component, static_cast<std::size_t>(std::ceil(
+                         static_cast<double>(breadth_first_budget(target, growth, candidate_excess)) /
+                         candidate_excess)));
+      if (retry) {
+        result.statistics += extend_hottest_source_heat(kept, *ws);
+      } else {
+        const std::size_t budget = breadth_first_budget(target, growth, candidate_excess);
+        ws->prune = prunes(s, budget);
+        ws->heat_drop_below =
+            ws->prune ? m_pruning_tolerance * smallest_heat_guess(s, budget) : 0.0;
+        result.statistics += solve_hottest_source_heat(s, kept, *ws);
+      }
+      whole_component = kept == component;
+      choose_region(kept, *ws);
+    } else {
+      grow_candidates(s, patch, target, wanted, growth, candidate_excess, *ws);
+      whole_component = ws->candidates.size() == component;
+      // A retry extends the first attempt's heat to its larger candidates.
+      result.statistics += retry ? extend_source_heat(*ws) : solve_source_heat(s, *ws);
+      const std::size_t kept =
+          whole_component ? ws->candidates.size()
+                          : static_cast<std::size_t>(std::ceil(
+                                static_cast<double>(ws->candidates.size()) / candidate_excess));
+      choose_region(kept, *ws);
+      if (breadth_first && !whole_component && region_is_cut_short(hottest_inside, *ws))
+        result.statistics += widen_candidates(target, growth, kept, component, whole_component, *ws);
+    }
+    result.statistics += confirm_pruned_source_heat(s, largest_first, *ws);
     mark_region(*ws);
     result.statistics += integrate_distance(s, *ws);
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);
