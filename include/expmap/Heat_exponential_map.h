@@ -95,8 +95,8 @@ struct Heat_options {
   double region_growth = 2.0;
   /// The heat from the source decays exponentially with distance, and so do
   /// the triangular solves' intermediate values: on small patches of large
-  /// meshes (a component of at least 200,000 vertices, candidates at most
-  /// 1/50 of it), entries of the heat solves below this tolerance times the
+  /// meshes (a component of at least 200,000 vertices, 2.6 times the patch
+  /// at most 1/50 of it), entries of the heat solves below this tolerance times the
   /// smallest value read are not propagated
   /// (`Localized_cholesky_solver::solve_pruned`), which skips most of the
   /// dense top separators. Every value read stays within about this
