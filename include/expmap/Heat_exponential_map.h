@@ -453,6 +453,9 @@ class Heat_exponential_map
   double smallest_heat_guess(int s, std::size_t count) const;
   // Whether a query from s on `count` candidates prunes its heat solves.
   bool prunes(int s, std::size_t count) const;
+  // Sets ws.prune and the source heat's threshold ws.heat_drop_below (0:
+  // not pruned) for a query from s on `count` candidates.
+  void choose_source_heat_pruning(int s, std::size_t count, Workspace& ws) const;
   static constexpr std::size_t min_component_per_pruned_candidate = 50;
   static constexpr std::size_t min_pruned_component = 200000;
   // Checks a pruned source-heat solve's threshold against the heat of the
@@ -626,10 +629,15 @@ class Heat_exponential_map
 
 template <class TM, class VPM, class S>
 Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat(int s, Workspace& ws) const {
-  ws.prune = prunes(s, ws.candidates.size());
-  ws.heat_drop_below =
-      ws.prune ? m_pruning_tolerance * smallest_heat_guess(s, ws.candidates.size()) : 0.0;
+  choose_source_heat_pruning(s, ws.candidates.size(), ws);
   return solve_source_heat_below(s, ws);
+}
+
+template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::choose_source_heat_pruning(int s, std::size_t count,
+                                                                  Workspace& ws) const {
+  ws.prune = prunes(s, count);
+  ws.heat_drop_below = ws.prune ? m_pruning_tolerance * smallest_heat_guess(s, count) : 0.0;
 }
 
 template <class TM, class VPM, class S>
@@ -1038,17 +1046,16 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     if (largest_first) {
       // The region is the hottest vertices of the component: no candidates
       // to cut it short. A retry continues the first attempt's solve.
+      // As many as breadth-first candidates would give (and pruned as they
+      // would be).
+      const std::size_t budget = breadth_first_budget(target, growth, candidate_excess);
       const std::size_t kept = std::min(
-          component, static_cast<std::size_t>(std::ceil(
-                         static_cast<double>(breadth_first_budget(target, growth, candidate_excess)) /
-                         candidate_excess)));
+          component,
+          static_cast<std::size_t>(std::ceil(static_cast<double>(budget) / candidate_excess)));
       if (retry) {
         result.statistics += extend_hottest_source_heat(kept, *ws);
       } else {
-        const std::size_t budget = breadth_first_budget(target, growth, candidate_excess);
-        ws->prune = prunes(s, budget);
-        ws->heat_drop_below =
-            ws->prune ? m_pruning_tolerance * smallest_heat_guess(s, budget) : 0.0;
+        choose_source_heat_pruning(s, budget, *ws);
         result.statistics += solve_hottest_source_heat(s, kept, *ws);
       }
       whole_component = kept == component;
