@@ -24,6 +24,7 @@
 #include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Near_source_zone.h>
+#include <expmap/internal/Nearest_first.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
@@ -1134,15 +1135,13 @@ std::vector<std::size_t> Heat_exponential_map<TM, VPM, S>::select_patch(
       return distance < other.distance || (distance == other.distance && vertex < other.vertex);
     }
   };
-  std::vector<Key> keys(order.size());
+  std::vector<Key> keys(order.size()), scratch;
+  std::vector<std::size_t> bucket_start;
   for (std::size_t k = 0; k < order.size(); ++k)
     keys[k] = {ws.potential[order[k]], ws.region[order[k]], order[k]};
-  if (patch.kind() != Patch::Kind::geodesic_radius && patch.kind() != Patch::Kind::vertex_set &&
-      keys.size() > target) {
-    std::nth_element(keys.begin(), keys.begin() + static_cast<std::ptrdiff_t>(target), keys.end());
-    keys.resize(target);
-  }
-  std::sort(keys.begin(), keys.end());
+  const bool by_count =
+      patch.kind() != Patch::Kind::geodesic_radius && patch.kind() != Patch::Kind::vertex_set;
+  internal::keep_nearest_sorted(keys, by_count ? target : keys.size(), scratch, bucket_start);
   order.resize(keys.size());
   for (std::size_t k = 0; k < keys.size(); ++k) order[k] = keys[k].position;
   return order;
