@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -168,6 +169,69 @@ BOOST_AUTO_TEST_CASE(a_pruned_largest_first_solve_keeps_the_largest_values) {
     if (expected.count(rows[i]))
       BOOST_TEST(std::abs(values[i] - x[rows[i]]) <= 1e-10 * x[rows[i]]);
   BOOST_TEST(pruned.factor_entries < full.factor_entries);
+}
+
+BOOST_AUTO_TEST_CASE(a_threshold_solve_finds_every_value_above_it) {
+  // solve_at_least: every row of the full solve with at least the
+  // threshold, and an extension to a lower threshold equals a direct solve.
+  const int nx = 90, ny = 80, n = nx * ny;
+  for (const double t : {4.0, 60.0}) {
+    Heat_system heat(nx, ny, t);
+    const std::vector<Rhs_entry> b{{40 * nx + 45, 0, 1.0}, {60 * nx + 70, 0, 0.5}};
+    const Eigen::VectorXd x = heat.full(b);
+    auto above = [&](double threshold) {
+      std::set<int> rows;
+      for (int i = 0; i < n; ++i)
+        if (x[i] >= threshold) rows.insert(i);
+      return rows;
+    };
+    auto found = [](const std::vector<int>& rows, const std::vector<double>& values,
+                    double threshold) {
+      std::set<int> out;
+      for (std::size_t i = 0; i < rows.size(); ++i)
+        if (values[i] >= threshold) out.insert(rows[i]);
+      return out;
+    };
+    // Thresholds between the values (a value on the threshold would be
+    // decided by the last bit).
+    std::vector<double> sorted(x.data(), x.data() + n);
+    std::sort(sorted.begin(), sorted.end(), std::greater<double>());
+    for (const std::size_t count : {std::size_t{1}, std::size_t{60}, std::size_t{900},
+                                    std::size_t{4000}, std::size_t(n) - 1}) {
+      const double threshold = 0.5 * (sorted[count - 1] + sorted[count]);
+      BOOST_TEST_CONTEXT("t " << t << ", rows above " << count) {
+        std::vector<int> rows;
+        std::vector<double> values;
+        heat.local.solve_at_least(b, threshold, rows, values, *heat.ws);
+        check_values(x, rows, values, 0, n);
+        const std::set<int> expected = above(threshold);
+        BOOST_TEST(expected.size() == count);
+        BOOST_TEST((found(rows, values, threshold) == expected));
+        if (count == 900)
+          BOOST_TEST(rows.size() < std::size_t(n) / 2, "solved " << rows.size() << " rows of " << n);
+        // Continued to a lower threshold, by count and by threshold.
+        const double lower = 0.5 * (sorted[2 * count - 1] + sorted[2 * count]);
+        if (2 * count < std::size_t(n)) {
+          heat.local.extend_at_least(lower, rows, values, *heat.ws);
+          check_values(x, rows, values, 0, n);
+          BOOST_TEST((found(rows, values, lower) == above(lower)));
+          heat.local.solve_largest(b, count, rows, values, *heat.ws);
+          heat.local.extend_at_least(lower, rows, values, *heat.ws);
+          BOOST_TEST((found(rows, values, lower) == above(lower)));
+        }
+      }
+    }
+  }
+  Heat_system heat(30, 20, 4.0);
+  std::vector<int> rows;
+  std::vector<double> values;
+  const std::vector<Rhs_entry> b{{5, 0, 1.0}};
+  for (const double bad : {0.0, -1.0, std::numeric_limits<double>::infinity(),
+                           std::numeric_limits<double>::quiet_NaN()}) {
+    BOOST_CHECK_THROW(heat.local.solve_at_least(b, bad, rows, values, *heat.ws),
+                      std::invalid_argument);
+  }
+  BOOST_CHECK_THROW(heat.local.extend_at_least(1e-3, rows, values, *heat.ws), std::logic_error);
 }
 
 BOOST_AUTO_TEST_CASE(largest_first_solves_refuse_what_they_cannot_do) {

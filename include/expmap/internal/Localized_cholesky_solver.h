@@ -322,6 +322,59 @@ class Localized_cholesky_solver {
   Solve_statistics solve_largest(const std::vector<Rhs_entry>& entries, std::size_t count,
                                  std::vector<int>& rows, std::vector<double>& values,
                                  Workspace& ws, double drop_below = 0) const {
+    return solve_largest_until(entries, Largest_stop{count, 0.0}, rows, values, ws, drop_below);
+  }
+
+  /// As `solve_largest()`, but for every value at least `threshold` (> 0)
+  /// instead of a count: the search stops once every subtree left is
+  /// bounded below `threshold`. `rows` and `values` hold every row solved;
+  /// those of value at least `threshold` are all there are in the parts of
+  /// A that b touches. Stays open for `extend_at_least()`.
+  /// \pre as `solve_largest()`; threshold > 0 and finite.
+  Solve_statistics solve_at_least(const std::vector<Rhs_entry>& entries, double threshold,
+                                  std::vector<int>& rows, std::vector<double>& values,
+                                  Workspace& ws, double drop_below = 0) const {
+    check_threshold(threshold);
+    return solve_largest_until(entries, Largest_stop{no_count, threshold}, rows, values, ws,
+                               drop_below);
+  }
+
+  /// Continues the last `solve_largest()` or `solve_at_least()` on `ws`
+  /// until every value at least `threshold` is known.
+  /// \pre as `extend_largest()`; threshold > 0 and finite.
+  Solve_statistics extend_at_least(double threshold, std::vector<int>& rows,
+                                   std::vector<double>& values, Workspace& ws) const {
+    check_threshold(threshold);
+    return extend_largest_until(Largest_stop{no_count, threshold}, rows, values, ws);
+  }
+
+  /// Continues the last `solve_largest()` on `ws` until the `count` largest
+  /// values are known, appending the rows it solves to `rows` and `values`
+  /// (which must hold what the earlier calls wrote).
+  /// \pre `ws` holds an open `solve_largest()` (else std::logic_error).
+  Solve_statistics extend_largest(std::size_t count, std::vector<int>& rows,
+                                  std::vector<double>& values, Workspace& ws) const {
+    return extend_largest_until(Largest_stop{count, 0.0}, rows, values, ws);
+  }
+
+ private:
+  // Where a largest-first search may stop: once `count` values exceed every
+  // bound left, or once every bound left is below `threshold` (0: never).
+  struct Largest_stop {
+    std::size_t count;
+    double threshold;
+  };
+  static constexpr std::size_t no_count = std::numeric_limits<std::size_t>::max();
+
+  static void check_threshold(double threshold) {
+    if (!(threshold > 0) || !std::isfinite(threshold))
+      throw std::invalid_argument(
+          "Localized_cholesky_solver: the threshold must be positive and finite");
+  }
+
+  Solve_statistics solve_largest_until(const std::vector<Rhs_entry>& entries, Largest_stop stop,
+                                       std::vector<int>& rows, std::vector<double>& values,
+                                       Workspace& ws, double drop_below) const {
     check_drop_below(drop_below);
     for (const Rhs_entry& e : entries)
       if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
@@ -358,29 +411,24 @@ class Localized_cholesky_solver {
     ws.m_values_above = 0;
     rows.clear();
     values.clear();
-    stats += largest_first(count, rows, values, ws);
+    stats += largest_first(stop, rows, values, ws);
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   }
 
-  /// Continues the last `solve_largest()` on `ws` until the `count` largest
-  /// values are known, appending the rows it solves to `rows` and `values`
-  /// (which must hold what the earlier calls wrote).
-  /// \pre `ws` holds an open `solve_largest()` (else std::logic_error).
-  Solve_statistics extend_largest(std::size_t count, std::vector<int>& rows,
-                                  std::vector<double>& values, Workspace& ws) const {
+  Solve_statistics extend_largest_until(Largest_stop stop, std::vector<int>& rows,
+                                        std::vector<double>& values, Workspace& ws) const {
     if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
         ws.m_largest_values != rows.size())
       throw std::logic_error("Localized_cholesky_solver: extend_largest() without solve_largest()");
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = largest_first(count, rows, values, ws);
+    Solve_statistics stats = largest_first(stop, rows, values, ws);
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   }
 
- private:
   // Whether and below what magnitude a solve stops propagating entries.
   struct Pruning {
     bool enabled = false;
@@ -557,8 +605,9 @@ class Localized_cholesky_solver {
   // infinity on the right-hand side's paths, where the bound does not hold)
   // until the `count`-th largest value solved exceeds every bound left,
   // solving each popped supernode in whole and pushing its children.
-  Solve_statistics largest_first(std::size_t count, std::vector<int>& rows,
+  Solve_statistics largest_first(Largest_stop stop, std::vector<int>& rows,
                                  std::vector<double>& values, Workspace& ws) const {
+    const std::size_t count = stop.count;
     const auto& F = m_factor;
     double* y = ws.m_block;
     const std::uint32_t s = ws.m_stamp;
@@ -572,7 +621,7 @@ class Localized_cholesky_solver {
     // (a child's rows below are its parent's rows or rows below), so the
     // count above the bounds only grows.
     auto settled = [&](double bound) {
-      if (count == 0) return true;
+      if (count == 0 || bound < stop.threshold) return true;
       if (!(bound < std::numeric_limits<double>::infinity())) return false;
       for (const std::size_t b = value_bucket(bound) + 1; ws.m_bucket_floor > b;)
         ws.m_values_above += ws.m_bucket_count[--ws.m_bucket_floor];
