@@ -504,9 +504,16 @@ class Heat_exponential_map
   // Step 1 (distance part) for a radius patch: the heat from the source
   // solved largest first until every vertex with at least `threshold` is
   // known (Localized_cholesky_solver::solve_at_least), or continued there
-  // (`retry`); returns the region's size, the vertices of at least that
-  // heat. Pruned below ws.heat_drop_below (not pruned if it is 0).
+  // (`retry`); sets `kept` to the region's size, the vertices of at least
+  // that heat. Pruned below ws.heat_drop_below (not pruned if it is 0).
   Solve_statistics solve_source_heat_at_least(int s, double threshold, bool retry,
+                                              std::size_t& kept, Workspace& ws) const;
+  // Step 1 (distance part) without candidates (finds_region_largest_first;
+  // manual section 2, steps 3 and 4): the source heat solved, or its search
+  // continued (`retry`), until the region for a patch `growth` times larger
+  // is known; sets `kept` to its size.
+  Solve_statistics solve_region_largest_first(int s, const Patch& patch, std::size_t target,
+                                              std::size_t component, double growth, bool retry,
                                               std::size_t& kept, Workspace& ws) const;
   internal::Localized_cholesky_solver::Workspace& source_heat_workspace(Workspace& ws) const {
     return m_separate_distance_heat ? ws.distance_heat_solve : ws.heat_solve;
@@ -1079,33 +1086,9 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     if (largest_first) {
       // The region is the hottest vertices of the component: no candidates
       // to cut it short. A retry continues the first attempt's solve.
-      // As many as breadth-first candidates would give (and pruned as they
-      // would be).
-      const std::size_t budget = breadth_first_budget(target, growth, candidate_excess);
-      std::size_t kept = std::min(
-          component,
-          static_cast<std::size_t>(std::ceil(static_cast<double>(budget) / candidate_excess)));
-      if (patch.kind() == Patch::Kind::geodesic_radius) {
-        const double reach = region_radius(patch.radius(), growth);
-        const double threshold = heat_at_distance(reach);
-        if (!retry) {
-          // Pruned as a count patch of a flat disk of that radius would be.
-          const double disk = M_PI * reach * reach / m_mean_vertex_area;
-          const std::size_t count = disk < static_cast<double>(component)
-                                        ? static_cast<std::size_t>(disk)
-                                        : component;
-          choose_source_heat_pruning(s, count, *ws, threshold);
-        }
-        result.statistics += solve_source_heat_at_least(s, threshold, retry, kept, *ws);
-        // Every vertex solved: a lower threshold would find no more (heat
-        // that underflowed to zero), so the region is the whole component.
-        if (ws->candidates.size() == component) kept = component;
-      } else if (retry) {
-        result.statistics += extend_hottest_source_heat(kept, *ws);
-      } else {
-        choose_source_heat_pruning(s, budget, *ws);
-        result.statistics += solve_hottest_source_heat(s, kept, *ws);
-      }
+      std::size_t kept = 0;
+      result.statistics +=
+          solve_region_largest_first(s, patch, target, component, growth, retry, kept, *ws);
       whole_component = kept == component;
       choose_region(kept, *ws);
     } else {
@@ -1140,6 +1123,43 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
       return result;
     }
   }
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_region_largest_first(
+    int s, const Patch& patch, std::size_t target, std::size_t component, double growth,
+    bool retry, std::size_t& kept, Workspace& ws) const {
+  Solve_statistics stats;
+  if (patch.kind() == Patch::Kind::geodesic_radius) {
+    // Down to the heat at the region's radius.
+    const double reach = region_radius(patch.radius(), growth);
+    const double threshold = heat_at_distance(reach);
+    if (!retry) {
+      // Pruned as a count patch of a flat disk of that radius would be.
+      const double disk = M_PI * reach * reach / m_mean_vertex_area;
+      const std::size_t count = disk < static_cast<double>(component)
+                                    ? static_cast<std::size_t>(disk)
+                                    : component;
+      choose_source_heat_pruning(s, count, ws, threshold);
+    }
+    stats += solve_source_heat_at_least(s, threshold, retry, kept, ws);
+    // Every vertex solved: a lower threshold would find no more (heat
+    // that underflowed to zero), so the region is the whole component.
+    if (ws.candidates.size() == component) kept = component;
+  } else {
+    // As many as breadth-first candidates would give (and pruned as
+    // they would be).
+    const std::size_t budget = breadth_first_budget(target, growth, candidate_excess);
+    kept = std::min(component, static_cast<std::size_t>(std::ceil(
+                                   static_cast<double>(budget) / candidate_excess)));
+    if (retry) {
+      stats += extend_hottest_source_heat(kept, ws);
+    } else {
+      choose_source_heat_pruning(s, budget, ws);
+      stats += solve_hottest_source_heat(s, kept, ws);
+    }
+  }
+  return stats;
 }
 
 template <class TM, class VPM, class S>
