@@ -140,7 +140,7 @@ BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
   check_cutoff(heat, "sphere (10,242 vertices)", {0, 5000});
 }
 
-// Small patches of a large mesh prune their heat solves (Heat_options::
+// Small count and radius patches of a large mesh prune their heat solves (Heat_options::
 // pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
 // radius in distance and 1e-10 rad in angle, and the solves must read fewer
 // factor entries. A torus of 230k vertices, large enough that the query
@@ -173,24 +173,33 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
   const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
   for (const std::size_t source : {std::size_t{1000}, std::size_t{around * along / 2 + 77}})
     for (const double fraction : {0.001, 0.004}) {
-      const auto a = pruned.compute_by_index(source, expmap::Patch::fraction(fraction));
-      const auto b = unpruned.compute_by_index(source, expmap::Patch::fraction(fraction));
-      BOOST_TEST_REQUIRE(a.indices == b.indices);
-      const double radius = b.distance.back();
-      double distance_error = 0, angle_error = 0;
-      for (std::size_t i = 0; i < a.size(); ++i) {
-        distance_error = std::max(distance_error, std::abs(a.distance[i] - b.distance[i]) / radius);
-        angle_error =
-            std::max(angle_error, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
+      // A count patch, and a radius patch of its radius (its region found
+      // down to a heat, which also sets its pruning threshold).
+      const double patch_radius =
+          unpruned.compute_by_index(source, expmap::Patch::fraction(fraction)).distance.back();
+      for (const expmap::Patch& patch :
+           {expmap::Patch::fraction(fraction), expmap::Patch::geodesic_radius(patch_radius)}) {
+        const auto a = pruned.compute_by_index(source, patch);
+        const auto b = unpruned.compute_by_index(source, patch);
+        BOOST_TEST_REQUIRE(a.indices == b.indices);
+        const double radius = b.distance.back();
+        double distance_error = 0, angle_error = 0;
+        for (std::size_t i = 0; i < a.size(); ++i) {
+          distance_error = std::max(distance_error, std::abs(a.distance[i] - b.distance[i]) / radius);
+          angle_error =
+              std::max(angle_error, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
+        }
+        BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%, "
+                                     << (patch.kind() == expmap::Patch::Kind::fraction ? "count" : "radius")
+                                     << " patch: pruned solves read "
+                                     << a.statistics.factor_entries << " of "
+                                     << b.statistics.factor_entries << " factor entries; distance "
+                                     << distance_error << " of the radius, angle " << angle_error
+                                     << " rad");
+        BOOST_TEST(distance_error <= 1e-10);
+        BOOST_TEST(angle_error <= 1e-10);
+        BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
       }
-      BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%: pruned solves read "
-                                   << a.statistics.factor_entries << " of "
-                                   << b.statistics.factor_entries << " factor entries; distance "
-                                   << distance_error << " of the radius, angle " << angle_error
-                                   << " rad");
-      BOOST_TEST(distance_error <= 1e-10);
-      BOOST_TEST(angle_error <= 1e-10);
-      BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
     }
 }
 
