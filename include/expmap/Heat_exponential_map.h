@@ -477,6 +477,14 @@ class Heat_exponential_map
   Solve_statistics solve_hottest_source_heat(int s, std::size_t kept, Workspace& ws) const;
   // The same solve continued until the `kept` hottest are known (a retry).
   Solve_statistics extend_hottest_source_heat(std::size_t kept, Workspace& ws) const;
+  // Moves the source to the front of a largest-first solve's candidates
+  // (and its heat with it), where choose_region wants it.
+  static void put_source_first(int s, Workspace& ws) {
+    const auto at = static_cast<std::size_t>(
+        std::find(ws.candidates.begin(), ws.candidates.end(), s) - ws.candidates.begin());
+    std::swap(ws.candidates[0], ws.candidates[at]);
+    std::swap(ws.heat[0], ws.heat[at]);
+  }
   // Whether a query finds its region largest first: for patches given by a
   // vertex count or a radius, if the matrix allows it. (A vertex-set patch
   // names no size its region could be cut to before the distance is known.)
@@ -760,10 +768,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_hottest_source_heat(
   ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
   const Solve_statistics stats = distance_heat().solve_largest(
       ws.rhs, kept, ws.candidates, ws.heat, source_heat_workspace(ws), ws.heat_drop_below);
-  // choose_region wants the source first.
-  const auto at = std::find(ws.candidates.begin(), ws.candidates.end(), s) - ws.candidates.begin();
-  std::swap(ws.candidates[0], ws.candidates[static_cast<std::size_t>(at)]);
-  std::swap(ws.heat[0], ws.heat[static_cast<std::size_t>(at)]);
+  put_source_first(s, ws);
   return stats;
 }
 
@@ -1180,10 +1185,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat_at_least(
     ws.rhs.assign(1, internal::Rhs_entry{s, 0, 1.0});
     stats = distance_heat().solve_at_least(ws.rhs, threshold, ws.candidates, ws.heat,
                                            source_heat_workspace(ws), ws.heat_drop_below);
-    // choose_region wants the source first.
-    const auto at = std::find(ws.candidates.begin(), ws.candidates.end(), s) - ws.candidates.begin();
-    std::swap(ws.candidates[0], ws.candidates[static_cast<std::size_t>(at)]);
-    std::swap(ws.heat[0], ws.heat[static_cast<std::size_t>(at)]);
+    put_source_first(s, ws);
   }
   // The source always (a heat below the threshold at the source is a patch
   // radius far beyond what the time step resolves).

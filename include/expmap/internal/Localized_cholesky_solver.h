@@ -421,7 +421,9 @@ class Localized_cholesky_solver {
                                         std::vector<double>& values, Workspace& ws) const {
     if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
         ws.m_largest_values != rows.size())
-      throw std::logic_error("Localized_cholesky_solver: extend_largest() without solve_largest()");
+      throw std::logic_error(
+          "Localized_cholesky_solver: extend_largest() or extend_at_least() without an open "
+          "solve_largest() or solve_at_least()");
     const auto start = std::chrono::steady_clock::now();
     Solve_statistics stats = largest_first(stop, rows, values, ws);
     stats.solve_seconds =
@@ -600,11 +602,13 @@ class Localized_cholesky_solver {
     return static_cast<std::size_t>(bits >> 49);
   }
 
-  // The back substitution of solve_largest: pops the frontier's supernode
-  // with the largest bound (the largest solved value among its rows below;
-  // infinity on the right-hand side's paths, where the bound does not hold)
-  // until the `count`-th largest value solved exceeds every bound left,
-  // solving each popped supernode in whole and pushing its children.
+  // The back substitution of solve_largest and solve_at_least: pops the
+  // frontier's supernode with the largest bound (the largest solved value
+  // among its rows below; infinity on the right-hand side's paths, where the
+  // bound does not hold) until `stop` is met (the `count`-th largest value
+  // solved exceeds every bound left, or every bound left is below the
+  // threshold), solving each popped supernode in whole and pushing its
+  // children.
   Solve_statistics largest_first(Largest_stop stop, std::vector<int>& rows,
                                  std::vector<double>& values, Workspace& ws) const {
     const std::size_t count = stop.count;
@@ -613,7 +617,8 @@ class Localized_cholesky_solver {
     const std::uint32_t s = ws.m_stamp;
     auto& frontier = ws.m_frontier;
     Solve_statistics stats;
-    // Settled once `count` values exceed every bound left. The values are
+    // Settled once every bound left is below the threshold, or once `count`
+    // values exceed every bound left. The values are
     // counted in buckets of an eighth of a binade and a value counts as
     // exceeding a bound only if its bucket is higher, so the search may go
     // on up to a bucket longer than it must, never shorter; with it, no
