@@ -50,6 +50,7 @@ struct Compute_arguments {
   std::optional<double> time_factor;
   std::optional<double> distance_time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
+  std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<std::array<double, 3>> reference;
@@ -231,6 +232,12 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       if (*a.laplacian != "direct" && *a.laplacian != "intrinsic-delaunay")
         throw Usage_error("--laplacian must be 'direct' or 'intrinsic-delaunay' (got '" +
                           *a.laplacian + "')");
+    } else if (name == "--vertex-area") {
+      once(a.vertex_area.has_value());
+      a.vertex_area = take_value();
+      if (*a.vertex_area != "mixed-voronoi" && *a.vertex_area != "barycentric")
+        throw Usage_error("--vertex-area must be 'mixed-voronoi' or 'barycentric' (got '" +
+                          *a.vertex_area + "')");
     } else if (name == "--angles") {
       once(a.angles.has_value());
       try {

@@ -90,6 +90,9 @@ expmap::Heat_options heat_options(const Compute_arguments& a) {
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
     options.laplacian = expmap::Laplacian_mode::direct;
+  if (a.vertex_area)
+    options.vertex_area = *a.vertex_area == "barycentric" ? expmap::Vertex_area::barycentric
+                                                          : expmap::Vertex_area::mixed_voronoi;
   if (a.angles) options.angle_estimator = *a.angles;
   if (a.near_source_blend) options.near_source_blend = *a.near_source_blend;
   return options;
@@ -121,7 +124,8 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   if (options.distance_time_factor && *options.distance_time_factor != options.time_factor)
     d << ", distance m = " << *options.distance_time_factor;
   d << ", "
-    << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT") << ", "
+    << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT")
+    << (options.vertex_area == expmap::Vertex_area::barycentric ? ", barycentric areas" : "") << ", "
     << expmap::to_string(options.angle_estimator) << " angles, chords "
     << options.near_source_blend.begin << "h to " << options.near_source_blend.end
     << "h, wider if flat)";
@@ -341,6 +345,9 @@ std::string map_options_help() {
        "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
+       "  --vertex-area A      heat only: mixed-voronoi | barycentric, the heat step's\n"
+       "                       mass matrix; the former gives more accurate angles on\n"
+       "                       irregular triangles (default: mixed-voronoi)\n"
        "  --angles A           heat only: how the angle is read off the heat at the\n"
        "                       source's one-ring: heat-quadratic-fit (least-squares\n"
        "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
@@ -372,8 +379,8 @@ std::string map_options_help() {
 std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
          "                      [--method M] [--time-factor T] [--distance-time-factor T]\n"
-         "                      [--laplacian L] [--angles A] [--near-source-blend B,E]\n"
-         "                      [--reference X,Y,Z]\n"
+         "                      [--laplacian L] [--vertex-area A] [--angles A]\n"
+         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
          "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
@@ -397,8 +404,8 @@ std::string compute_help() {
 std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--distance-time-factor T] [--laplacian L] [--angles A]\n"
-         "                    [--near-source-blend B,E]\n"
+         "                    [--distance-time-factor T] [--laplacian L] [--vertex-area A]\n"
+         "                    [--angles A] [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
          "                    -o OUT [-o OUT ...]\n"
          "\n"
@@ -521,10 +528,10 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
   if (!method.takes_heat_options && (a.time_factor || a.distance_time_factor || a.laplacian ||
-                                     a.angles || a.near_source_blend))
+                                     a.vertex_area || a.angles || a.near_source_blend))
     throw Usage_error(
-        "--time-factor, --distance-time-factor, --laplacian, --angles and --near-source-blend "
-        "apply only to --method heat");
+        "--time-factor, --distance-time-factor, --laplacian, --vertex-area, --angles and "
+        "--near-source-blend apply only to --method heat");
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))

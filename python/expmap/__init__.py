@@ -34,6 +34,7 @@ from ._expmap import (
     LocalMap,
     MeshFileError,
     PoissonRegularization,
+    VertexArea,
     read_mesh,
 )
 
@@ -59,5 +60,6 @@ __all__ = [
     "METHODS",
     "MeshFileError",
     "PoissonRegularization",
+    "VertexArea",
     "read_mesh",
 ]

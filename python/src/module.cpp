@@ -242,12 +242,14 @@ void bind_heat(py::module_& m) {
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     std::optional<double> distance_time_factor, py::handle laplacian,
+                    py::handle vertex_area,
                     py::handle regularization, double region_growth,
                     double pruning_tolerance, py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
           options.distance_time_factor = distance_time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
+          options.vertex_area = enum_argument<expmap::Vertex_area>(vertex_area, "vertex_area");
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.region_growth = region_growth;
@@ -263,6 +265,7 @@ void bind_heat(py::module_& m) {
         py::arg("time_factor") = defaults.time_factor,
         py::arg("distance_time_factor") = defaults.distance_time_factor,
         py::arg("laplacian") = defaults.laplacian,
+        py::arg("vertex_area") = defaults.vertex_area,
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
         py::arg("pruning_tolerance") = defaults.pruning_tolerance,
@@ -276,6 +279,8 @@ void bind_heat(py::module_& m) {
         "distance_time_factor: time factor of the heat the distance comes from,\n"
         "    when it should differ (one more factorization); None: time_factor.\n"
         "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
+        "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
+        "    heat step's mass matrix.\n"
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"
@@ -323,6 +328,10 @@ PYBIND11_MODULE(_expmap, m) {
                                     "Which triangulation the Laplacian is built on.")
       .value("direct", expmap::Laplacian_mode::direct)
       .value("intrinsic_delaunay", expmap::Laplacian_mode::intrinsic_delaunay);
+  py::enum_<expmap::Vertex_area>(m, "VertexArea",
+                                 "The area each vertex stands for in the heat step's mass matrix.")
+      .value("barycentric", expmap::Vertex_area::barycentric)
+      .value("mixed_voronoi", expmap::Vertex_area::mixed_voronoi);
   py::enum_<expmap::Poisson_regularization>(
       m, "PoissonRegularization", "How the singular Poisson system of the distance is made definite.")
       .value("pinned_vertex", expmap::Poisson_regularization::pinned_vertex)

@@ -27,6 +27,7 @@ Comparison compare_with_cgal(Surface_mesh& mesh, std::size_t source,
   options.distance_time_factor = 1.0;  // CGAL's t = h^2
   options.regularization = regularization;
   options.laplacian = expmap::Laplacian_mode::direct;  // CGAL's Direct mode
+  options.vertex_area = expmap::Vertex_area::barycentric;  // CGAL's mass matrix
   // The heat distance itself: without the source's neighbours at their edge
   // lengths (Near_source_blend), which CGAL does not do.
   options.near_source_blend = {0, 0};

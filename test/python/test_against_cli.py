@@ -56,10 +56,11 @@ def test_exact_method_as_the_command_line_program(tmp_path, cactus):
 def test_heat_options_reach_the_library(tmp_path, elephant):
     path, V, F = elephant
     heat = expmap.HeatExponentialMap(V, F, time_factor=3.0, laplacian="direct",
-                                     angle_estimator="heat_gradient", near_source_blend=(1.0, 3.0))
+                                     vertex_area="barycentric", angle_estimator="heat_gradient", near_source_blend=(1.0, 3.0))
     local = heat.compute(500, radius=0.05)
     reference = cli_map(tmp_path, path, "heat", 500, "--radius", "0.05", "--time-factor", "3",
-                        "--laplacian", "direct", "--angles", "heat-gradient",
+                        "--laplacian", "direct", "--vertex-area", "barycentric",
+                        "--angles", "heat-gradient",
                         "--near-source-blend", "1,3")
     assert_same_map(local, reference)
 

@@ -62,6 +62,7 @@ def test_every_enum_member_is_accepted_by_name_and_value(cactus):
     _, V, F = cactus
     for enum, option in ((expmap.AngleEstimator, "angle_estimator"),
                          (expmap.LaplacianMode, "laplacian"),
+                         (expmap.VertexArea, "vertex_area"),
                          (expmap.PoissonRegularization, "regularization")):
         assert len(enum.__members__) >= 2
         for name, value in enum.__members__.items():

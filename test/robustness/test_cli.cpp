@@ -230,7 +230,8 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--distance-time-factor", "--laplacian", "--angles", "--near-source-blend", "--reference",
+        "--distance-time-factor", "--laplacian", "--vertex-area", "--angles", "--near-source-blend",
+        "--reference",
         "--no-triangulate", "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
@@ -411,7 +412,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
-        "--time-factor", "--distance-time-factor", "--laplacian", "--angles",
+        "--time-factor", "--distance-time-factor", "--laplacian", "--vertex-area", "--angles",
         "--near-source-blend", "--reference",
         "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
     BOOST_TEST(help.find(option) != std::string::npos, option);

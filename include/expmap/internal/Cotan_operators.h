@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
+#include <array>
 #include <vector>
 
 namespace expmap {
@@ -57,6 +58,36 @@ inline Eigen::VectorXd lumped_mass(const Intrinsic_triangulation& tri,
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(static_cast<int>(tri.number_of_vertices));
   for (std::size_t f = 0; f < tri.number_of_faces(); ++f)
     for (int v : tri.face[f]) mass[v] += shapes[f].area / 3.0;
+  return mass;
+}
+
+/// Lumped mixed Voronoi mass (Meyer, Desbrun, Schroeder and Barr, "Discrete
+/// differential-geometry operators for triangulated 2-manifolds", VisMath
+/// 2002): in a non-obtuse triangle each corner gets the part of the
+/// triangle nearer to it than to the other corners, (|e1|^2 cot b + |e2|^2
+/// cot a) / 8 over its two edges e1, e2 and their opposite angles b, a; an
+/// obtuse triangle gives half its area to the obtuse corner and a quarter
+/// to each other one (its circumcentre lies outside it). Every triangle's
+/// area is shared out exactly, as in `lumped_mass`.
+inline Eigen::VectorXd mixed_voronoi_mass(const Intrinsic_triangulation& tri,
+                                          const std::vector<Triangle_shape>& shapes) {
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(static_cast<int>(tri.number_of_vertices));
+  for (std::size_t f = 0; f < tri.number_of_faces(); ++f) {
+    const Triangle_shape& shape = shapes[f];
+    const std::array<double, 3>& l = tri.length[f];  // l[k] = |c_k c_k+1|
+    const auto& cot = shape.cotangent;
+    const bool obtuse = cot[0] < 0 || cot[1] < 0 || cot[2] < 0;
+    for (int k = 0; k < 3; ++k) {
+      const int v = tri.face[f][k];
+      if (obtuse) {
+        mass[v] += cot[k] < 0 ? shape.area / 2 : shape.area / 4;
+        continue;
+      }
+      // Edge (k, k+1) faces corner k+2; edge (k+2, k) faces corner k+1.
+      const double next = l[k], previous = l[(k + 2) % 3];
+      mass[v] += (next * next * cot[(k + 2) % 3] + previous * previous * cot[(k + 1) % 3]) / 8;
+    }
+  }
   return mass;
 }
 
