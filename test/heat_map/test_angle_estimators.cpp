@@ -21,7 +21,9 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -232,6 +234,56 @@ BOOST_AUTO_TEST_CASE(quadratic_fit_is_exact_for_quadratics_on_an_irregular_star)
   BOOST_TEST(turn > 1e-2);
 }
 
+// The weights of the fit (internal::fit_weight_width) keep it exact for
+// quadratics and let less of a function's quartic part leak into the
+// gradient than the unweighted fit on the same irregular two-ring.
+BOOST_AUTO_TEST_CASE(weighted_quadratic_fit_leaks_less_of_higher_terms) {
+  const expmap::Triangle_soup soup = jittered_plane(6, 0.3, 7);
+  const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
+  const int s = 0;
+  const auto frame = expmap::internal::tangent_frame(arrays, s, std::nullopt);
+  expmap::internal::Star_gradient two_ring;  // s, its neighbours, theirs
+  two_ring.vertices = {s};
+  for (int round = 0; round < 2; ++round) {
+    const std::vector<int> current = two_ring.vertices;
+    for (int v : current)
+      for (int p = arrays.neighbor_start[v]; p < arrays.neighbor_start[v + 1]; ++p)
+        if (std::find(two_ring.vertices.begin(), two_ring.vertices.end(), arrays.neighbor[p]) ==
+            two_ring.vertices.end())
+          two_ring.vertices.push_back(arrays.neighbor[p]);
+  }
+  BOOST_TEST_REQUIRE(two_ring.vertices.size() > 15u);
+  const auto weighted = expmap::internal::quadratic_fit_star_gradient(arrays, two_ring, frame);
+  const auto uniform = expmap::internal::quadratic_fit_star_gradient(
+      arrays, two_ring, frame, std::numeric_limits<double>::infinity());
+  BOOST_TEST_REQUIRE(weighted.has_value());
+  BOOST_TEST_REQUIRE(uniform.has_value());
+  // grad f(s) = (2, -1) for both: a quadratic, then one with quartic terms.
+  auto values_of = [&](double quartic) {
+    std::vector<double> values;
+    for (int v : two_ring.vertices) {
+      const auto& pv = arrays.point[v];
+      const auto& ps = arrays.point[s];
+      const expmap::internal::Vector3 d{{pv[0] - ps[0], pv[1] - ps[1], pv[2] - ps[2]}};
+      const double x = expmap::internal::dot(d, frame.e1), y = expmap::internal::dot(d, frame.e2);
+      values.push_back(3 + 2 * x - y + 5 * x * x - 4 * x * y + 7 * y * y +
+                       quartic * (x * x * x * x - 3 * x * x * y * y + 2 * y * y * y * y + x * y * y * y));
+    }
+    return values;
+  };
+  auto error = [](const std::array<double, 2>& g) { return std::hypot(g[0] - 2, g[1] + 1); };
+  const std::vector<double> quadratic = values_of(0);
+  BOOST_TEST(error(weighted->apply(quadratic.data())) < 1e-10);
+  BOOST_TEST(error(uniform->apply(quadratic.data())) < 1e-10);
+  const std::vector<double> quartic = values_of(400);
+  const double weighted_error = error(weighted->apply(quartic.data()));
+  const double uniform_error = error(uniform->apply(quartic.data()));
+  BOOST_TEST_MESSAGE("gradient error from quartic terms: weighted " << weighted_error << ", unweighted "
+                     << uniform_error);
+  BOOST_TEST(weighted_error > 0);
+  BOOST_TEST(weighted_error < 0.8 * uniform_error);  // measured 0.68x
+}
+
 BOOST_AUTO_TEST_CASE(quadratic_fit_reduces_angle_error_on_irregular_one_rings) {
   const expmap::Triangle_soup regular = expmap::make_icosphere(5, 1.0);  // 10,242 vertices
   const expmap::Triangle_soup irregular = jittered_unit_sphere(5);
@@ -410,9 +462,9 @@ BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
                      << defaults.near_max << "; log-heat area-weighted without blend: mean "
                      << before.mean << ", largest within two rings " << before.near_max);
   BOOST_TEST(defaults.near_max < 0.05);
-  // Measured 1.60e-3 here (1.65e-3 with the barycentric mass, 2.32e-3 before
-  // the near-source blend widened on flat surfaces, 1.82e-2 for the log-heat
-  // area-weighted estimator).
+  // Measured 1.50e-3 here (1.60e-3 with the unweighted fit, 1.65e-3 also
+  // with the barycentric mass, 2.32e-3 before the near-source blend widened
+  // on flat surfaces, 1.82e-2 for the log-heat area-weighted estimator).
   BOOST_TEST(defaults.mean < 2e-3);
   BOOST_TEST(defaults.mean < 0.7 * before.mean);
 }
