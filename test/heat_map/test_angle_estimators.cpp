@@ -242,16 +242,8 @@ BOOST_AUTO_TEST_CASE(weighted_quadratic_fit_leaks_less_of_higher_terms) {
   const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
   const int s = 0;
   const auto frame = expmap::internal::tangent_frame(arrays, s, std::nullopt);
-  expmap::internal::Star_gradient two_ring;  // s, its neighbours, theirs
-  two_ring.vertices = {s};
-  for (int round = 0; round < 2; ++round) {
-    const std::vector<int> current = two_ring.vertices;
-    for (int v : current)
-      for (int p = arrays.neighbor_start[v]; p < arrays.neighbor_start[v + 1]; ++p)
-        if (std::find(two_ring.vertices.begin(), two_ring.vertices.end(), arrays.neighbor[p]) ==
-            two_ring.vertices.end())
-          two_ring.vertices.push_back(arrays.neighbor[p]);
-  }
+  expmap::internal::Star_gradient two_ring;
+  two_ring.vertices = expmap::internal::ring_neighborhood(arrays.neighbor_start, arrays.neighbor, s, 2);
   BOOST_TEST_REQUIRE(two_ring.vertices.size() > 15u);
   const auto weighted = expmap::internal::quadratic_fit_star_gradient(arrays, two_ring, frame);
   const auto uniform = expmap::internal::quadratic_fit_star_gradient(

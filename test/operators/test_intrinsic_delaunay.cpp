@@ -11,6 +11,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "Triangulation_from_points.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,6 +30,7 @@ namespace {
 using expmap::internal::Intrinsic_triangulation;
 using expmap::internal::make_intrinsic_delaunay;
 using expmap::internal::triangle_shape;
+using expmap_test::make_triangulation;
 
 using Point2 = std::array<double, 2>;
 using Point3 = std::array<double, 3>;
@@ -66,19 +69,6 @@ Point3 lift(const Point2& p) { return {{p[0], p[1], 0.0}}; }
 
 double orient(const Point2& a, const Point2& b, const Point2& c) {
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-}
-
-Intrinsic_triangulation make_triangulation(const std::vector<Point3>& points,
-                                           const std::vector<Face>& faces) {
-  Intrinsic_triangulation tri;
-  tri.number_of_vertices = points.size();
-  tri.face = faces;
-  for (const Face& f : faces) {
-    tri.length.push_back({{distance(points[f[0]], points[f[1]]),
-                           distance(points[f[1]], points[f[2]]),
-                           distance(points[f[2]], points[f[0]])}});
-  }
-  return tri;
 }
 
 double total_area(const Intrinsic_triangulation& tri) {

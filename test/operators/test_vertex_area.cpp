@@ -14,6 +14,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include "Triangulation_from_points.h"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -44,22 +46,6 @@ expmap::Triangle_soup jittered_planar_grid(double jitter) {
     soup.points[v][1] += jitter * unit();
   }
   return soup;
-}
-
-Intrinsic_triangulation triangulation_of(const expmap::Triangle_soup& soup) {
-  Intrinsic_triangulation tri;
-  tri.number_of_vertices = soup.points.size();
-  for (const auto& t : soup.triangles) {
-    tri.face.push_back({{int(t[0]), int(t[1]), int(t[2])}});
-    std::array<double, 3> l{};
-    for (int k = 0; k < 3; ++k) {
-      const auto& a = soup.points[t[k]];
-      const auto& b = soup.points[t[(k + 1) % 3]];
-      l[k] = std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
-    }
-    tri.length.push_back(l);
-  }
-  return tri;
 }
 
 // Whether each vertex lies on the boundary (an edge with one triangle).
@@ -97,7 +83,7 @@ BOOST_AUTO_TEST_SUITE(vertex_area)
 
 BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
   const expmap::Triangle_soup soup = jittered_planar_grid(0.12);
-  const Intrinsic_triangulation tri = triangulation_of(soup);
+  const Intrinsic_triangulation tri = expmap_test::make_triangulation(soup.points, soup.triangles);
   const auto shapes = expmap::internal::triangle_shapes(tri);
   for (const auto& shape : shapes)
     for (double cot : shape.cotangent) BOOST_TEST_REQUIRE(cot > 0);  // the premise: no obtuse angle
@@ -113,7 +99,8 @@ BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
 
   // On the regular grid both are the same.
   const expmap::Triangle_soup regular = jittered_planar_grid(0.0);
-  const Intrinsic_triangulation regular_tri = triangulation_of(regular);
+  const Intrinsic_triangulation regular_tri =
+      expmap_test::make_triangulation(regular.points, regular.triangles);
   const auto regular_shapes = expmap::internal::triangle_shapes(regular_tri);
   const Eigen::VectorXd a = expmap::internal::mixed_voronoi_mass(regular_tri, regular_shapes);
   const Eigen::VectorXd b = expmap::internal::lumped_mass(regular_tri, regular_shapes);
@@ -123,7 +110,7 @@ BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
 BOOST_AUTO_TEST_CASE(both_masses_share_out_every_triangle) {
   // Strongly jittered: obtuse triangles take the half / quarter split.
   const expmap::Triangle_soup soup = jittered_planar_grid(0.45);
-  const Intrinsic_triangulation tri = triangulation_of(soup);
+  const Intrinsic_triangulation tri = expmap_test::make_triangulation(soup.points, soup.triangles);
   const auto shapes = expmap::internal::triangle_shapes(tri);
   std::size_t obtuse = 0;
   double area = 0;

@@ -4,6 +4,7 @@
 #define EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 
 #include <expmap/Local_map.h>
+#include <expmap/internal/Nearest_first.h>
 #include <expmap/internal/Tangent_frame.h>
 
 #include <algorithm>
@@ -35,30 +36,6 @@ inline double wrap_angle(double a) {
 /// (r = 0, theta = 0), then the entries nearest first (ties by vertex
 /// index, so results do not depend on traversal order). Entries for the
 /// source itself are dropped. `entries` is sorted in place.
-/// Sorts [first, last) by `less`, a strict total order. By insertion while
-/// few entries are out of place (linear work for input sorted but for a few
-/// entries, where a comparison sort would still take n log n); once the
-/// insertions have moved more than a few entries per entry, by std::sort.
-template <class Iterator, class Less>
-void sort_nearly_sorted(Iterator first, Iterator last, Less less) {
-  if (last - first < 2) return;
-  auto moves_left = 4 * (last - first) + 64;
-  for (Iterator i = first + 1; i != last; ++i) {
-    if (!less(*i, *(i - 1))) continue;
-    auto value = std::move(*i);
-    Iterator j = i;
-    do {
-      *j = std::move(*(j - 1));
-      --j;
-    } while (j != first && less(value, *(j - 1)) && --moves_left > 0);
-    *j = std::move(value);
-    if (moves_left <= 0) {
-      std::sort(first, last, less);
-      return;
-    }
-  }
-}
-
 template <class VertexDescriptor>
 Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace expmap {
@@ -68,6 +69,30 @@ void keep_nearest_sorted(std::vector<Key>& keys, std::size_t count, std::vector<
                 scratch.begin() + static_cast<std::ptrdiff_t>(bucket_start[b + 1]));
   scratch.resize(count);
   keys.swap(scratch);
+}
+
+/// Sorts [first, last) by `less`, a strict total order. By insertion while
+/// few entries are out of place (linear work for input sorted but for a few
+/// entries, where a comparison sort would still take n log n); once the
+/// insertions have moved more than a few entries per entry, by std::sort.
+template <class Iterator, class Less>
+void sort_nearly_sorted(Iterator first, Iterator last, Less less) {
+  if (last - first < 2) return;
+  auto moves_left = 4 * (last - first) + 64;
+  for (Iterator i = first + 1; i != last; ++i) {
+    if (!less(*i, *(i - 1))) continue;
+    auto value = std::move(*i);
+    Iterator j = i;
+    do {
+      *j = std::move(*(j - 1));
+      --j;
+    } while (j != first && less(value, *(j - 1)) && --moves_left > 0);
+    *j = std::move(value);
+    if (moves_left <= 0) {
+      std::sort(first, last, less);
+      return;
+    }
+  }
 }
 
 }  // namespace internal
