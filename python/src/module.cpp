@@ -242,7 +242,7 @@ void bind_heat(py::module_& m) {
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     std::optional<double> distance_time_factor, py::handle laplacian,
-                    py::handle vertex_area,
+                    py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double region_growth,
                     double pruning_tolerance, py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
@@ -250,6 +250,8 @@ void bind_heat(py::module_& m) {
           options.distance_time_factor = distance_time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
           options.vertex_area = enum_argument<expmap::Vertex_area>(vertex_area, "vertex_area");
+          options.factor_precision =
+              enum_argument<expmap::Factor_precision>(factor_precision, "factor_precision");
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.region_growth = region_growth;
@@ -266,6 +268,7 @@ void bind_heat(py::module_& m) {
         py::arg("distance_time_factor") = defaults.distance_time_factor,
         py::arg("laplacian") = defaults.laplacian,
         py::arg("vertex_area") = defaults.vertex_area,
+        py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
         py::arg("pruning_tolerance") = defaults.pruning_tolerance,
@@ -281,6 +284,10 @@ void bind_heat(py::module_& m) {
         "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
         "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
         "    heat step's mass matrix.\n"
+        "factor_precision: a FactorPrecision or its name ('double_precision',\n"
+        "    'single_precision'): how the factors are kept between queries; single\n"
+        "    halves their memory and is faster on large meshes, and moves the map by\n"
+        "    about 1e-7 of its radius.\n"
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"
@@ -332,6 +339,10 @@ PYBIND11_MODULE(_expmap, m) {
                                  "The area each vertex stands for in the heat step's mass matrix.")
       .value("barycentric", expmap::Vertex_area::barycentric)
       .value("mixed_voronoi", expmap::Vertex_area::mixed_voronoi);
+  py::enum_<expmap::Factor_precision>(m, "FactorPrecision",
+                                      "The precision the Cholesky factors are kept in.")
+      .value("double_precision", expmap::Factor_precision::double_precision)
+      .value("single_precision", expmap::Factor_precision::single_precision);
   py::enum_<expmap::Poisson_regularization>(
       m, "PoissonRegularization", "How the singular Poisson system of the distance is made definite.")
       .value("pinned_vertex", expmap::Poisson_regularization::pinned_vertex)

@@ -119,15 +119,21 @@ class Localized_cholesky_solver {
 
   Localized_cholesky_solver() = default;
 
-  /// Regroups the factor into supernodes for the traversals; the factor's
-  /// owner may be destroyed afterwards (the supernodal copy is self-contained).
-  explicit Localized_cholesky_solver(const Cholesky_factor_view& factor)
-      : m_factor(make_supernodal_factor(factor)) {
+  /// Regroups the factor into supernodes for the traversals, its entries
+  /// kept in `precision` (the solves accumulate in double either way); the
+  /// factor's owner may be destroyed afterwards (the supernodal copy is
+  /// self-contained).
+  explicit Localized_cholesky_solver(
+      const Cholesky_factor_view& factor,
+      Factor_precision precision = Factor_precision::double_precision)
+      : m_factor(make_supernodal_factor(factor, precision)) {
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
-    for (const auto& sn : m_factor.supernode)
-      for (int c = 0; c < sn.ncol; ++c)
-        m_inverse_diagonal[sn.first_column + c] =
-            1.0 / m_factor.value[sn.diagonal + Supernodal_factor::triangle_row(c) + c];
+    with_entries([this](const auto* entries) {
+      for (const auto& sn : m_factor.supernode)
+        for (int c = 0; c < sn.ncol; ++c)
+          m_inverse_diagonal[sn.first_column + c] =
+              1.0 / static_cast<double>(entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
+    });
     compute_tree_height();
     compute_children();
   }
@@ -140,6 +146,12 @@ class Localized_cholesky_solver {
 
   /// Stored entries of the supernodal factor (dense blocks included).
   std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
+
+  /// The precision the factor's entries are kept in.
+  Factor_precision precision() const { return m_factor.precision; }
+
+  /// Bytes held by the factor's entries.
+  std::size_t entry_bytes() const { return m_factor.value_bytes(); }
 
   /// The factor's ordering: `permutation()[k]` is the row of A that became
   /// pivot k. A matrix with the same sparsity can be factored with it
@@ -582,10 +594,13 @@ class Localized_cholesky_solver {
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
       if (pruning.enabled) {
         stats.factor_entries +=
-            forward_supernode_pruned<W>(sn, first, ys, y, pruning.drop_below, ws.m_kept);
+            with_entries([&](const auto* entries) {
+              return forward_supernode_pruned<W>(entries, sn, first, ys, y, pruning.drop_below,
+                                                 ws.m_kept);
+            });
         continue;
       }
-      forward_supernode<W>(sn, first, ys, y);
+      with_entries([&](const auto* entries) { forward_supernode<W>(entries, sn, first, ys, y); });
       stats.factor_entries += entries_of(sn, first);
     }
     return stats;
@@ -641,9 +656,12 @@ class Localized_cholesky_solver {
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
       if (ws.m_largest_drop_below > 0) {
         stats.factor_entries +=
-            backward_supernode_pruned<1>(sn, 0, ys, y, ws.m_largest_drop_below, ws.m_kept);
+            with_entries([&](const auto* entries) {
+              return backward_supernode_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below,
+                                                  ws.m_kept);
+            });
       } else {
-        backward_supernode<1>(sn, 0, ys, y);
+        with_entries([&](const auto* entries) { backward_supernode<1>(entries, sn, 0, ys, y); });
         stats.factor_entries += entries_of(sn, 0);
       }
       ws.m_backward_stamp[k] = s;
@@ -696,11 +714,15 @@ class Localized_cholesky_solver {
       const int first = ws.m_backward_entry[*it];
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
       if (pruning.enabled) {
-        stats.factor_entries += backward_supernode_pruned<W>(sn, first, row_of(sn.first_column),
-                                                             y, pruning.drop_below, ws.m_kept);
+        stats.factor_entries += with_entries([&](const auto* entries) {
+          return backward_supernode_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
+                                              pruning.drop_below, ws.m_kept);
+        });
         continue;
       }
-      backward_supernode<W>(sn, first, row_of(sn.first_column), y);
+      with_entries([&](const auto* entries) {
+        backward_supernode<W>(entries, sn, first, row_of(sn.first_column), y);
+      });
       stats.factor_entries += entries_of(sn, first);
     }
 
@@ -755,7 +777,10 @@ class Localized_cholesky_solver {
     auto solve_columns = [&](int k, int first, int end) {
       const auto& sn = F.supernode[k];
       stats.backward_nodes += static_cast<std::size_t>(end - first);
-      backward_supernode<W>(sn, first, y + static_cast<std::size_t>(sn.first_column) * W, y, end);
+      with_entries([&](const auto* entries) {
+        backward_supernode<W>(entries, sn, first,
+                              y + static_cast<std::size_t>(sn.first_column) * W, y, end);
+      });
       stats.factor_entries += entries_of(sn, first, end);
     };
     for (std::size_t i = ws.m_backward_nodes.size(); i-- > 0;) {
@@ -773,12 +798,20 @@ class Localized_cholesky_solver {
     return stats;
   }
 
+  // Calls f with the factor's entries in the precision they are kept in
+  // (one branch per supernode; the kernels are compiled for both).
+  template <class F>
+  auto with_entries(F&& f) const -> decltype(f(std::declval<const double*>())) {
+    if (m_factor.is_single_precision()) return f(m_factor.single_value.data());
+    return f(m_factor.value.data());
+  }
+
   // out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
   // independent partial sums: without them every multiply-add waits for the
   // previous one (the compiler may not reassociate floating-point sums), and
   // a one-column solve runs at the latency of the adder, not its throughput.
-  template <int W>
-  static void subtract_dot(const double* l, const double* y, int begin, int end, double* out) {
+  template <int W, class T>
+  static void subtract_dot(const T* l, const double* y, int begin, int end, double* out) {
     constexpr int lanes = W == 1 ? 4 : 2;
     std::array<std::array<double, W>, lanes> acc{};
     int c = begin;
@@ -795,12 +828,12 @@ class Localized_cholesky_solver {
   // out[j * W + w] -= sum over t < nbelow of l[t * stride + j] * y[rows[t] * W + w]
   // for the C columns j of a supernode's rows below (row-major, `stride`
   // columns per row): part of the back substitution.
-  template <int W, int C>
-  static void subtract_below(const double* l, int stride, const int* rows, int nbelow,
+  template <int W, int C, class T>
+  static void subtract_below(const T* l, int stride, const int* rows, int nbelow,
                              const double* y, double* out) {
     std::array<std::array<double, W>, C> acc{};
     for (int t = 0; t < nbelow; ++t) {
-      const double* lt = l + static_cast<std::size_t>(t) * stride;
+      const T* lt = l + static_cast<std::size_t>(t) * stride;
       const double* xt = y + static_cast<std::size_t>(rows[t]) * W;
       for (int j = 0; j < C; ++j)
         for (int w = 0; w < W; ++w) acc[j][w] += lt[j] * xt[w];
@@ -813,18 +846,18 @@ class Localized_cholesky_solver {
   // (the earlier ones are zero): the diagonal block row by row (a row of the
   // row-major block is contiguous), then the rows below it, each one dot
   // product. `ys` are the supernode's own rows of the block `y`.
-  template <int W>
-  void forward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                         double* y) const {
+  template <int W, class T>
+  void forward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
+                         double* ys, double* y) const {
     const auto& F = m_factor;
-    const double* diagonal = F.value.data() + sn.diagonal;
+    const T* diagonal = entries + sn.diagonal;
     for (int r = first; r < sn.ncol; ++r) {
       double* yr = ys + r * W;
       subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       for (int w = 0; w < W; ++w) yr[w] *= inverse;
     }
-    const double* below = F.value.data() + sn.below;
+    const T* below = entries + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
     for (int t = 0; t < sn.nbelow; ++t)
       subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
@@ -837,15 +870,14 @@ class Localized_cholesky_solver {
   // are subtracted, then the diagonal block is solved bottom-up, each solved
   // row subtracted from the rows above it (row-contiguous in the row-major
   // block).
-  template <int W>
-  void backward_supernode(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                          const double* y, int end = -1) const {
-    const auto& F = m_factor;
+  template <int W, class T>
+  void backward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
+                          double* ys, const double* y, int end = -1) const {
     if (end < 0) end = sn.ncol;
-    backward_below<W>(sn, first, ys, y, end);
-    const double* diagonal = F.value.data() + sn.diagonal;
+    backward_below<W>(entries, sn, first, ys, y, end);
+    const T* diagonal = entries + sn.diagonal;
     for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
-      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      const T* l = diagonal + Supernodal_factor::triangle_row(r);
       for (int a = first; a < end; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * ys[r * W + w];
     }
@@ -854,7 +886,7 @@ class Localized_cholesky_solver {
     // written once per four rows of L instead of once per row).
     int r = end - 1;
     for (; r - 3 >= first; r -= 4) {
-      const double* l[4];
+      const T* l[4];
       std::array<std::array<double, W>, 4> x;
       for (int k = 0; k < 4; ++k) {
         const int row = r - k;
@@ -872,7 +904,7 @@ class Localized_cholesky_solver {
       const double inverse = m_inverse_diagonal[sn.first_column + r];
       std::array<double, W> xr;
       for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
-      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      const T* l = diagonal + Supernodal_factor::triangle_row(r);
       for (int a = first; a < r; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
     }
@@ -892,17 +924,17 @@ class Localized_cholesky_solver {
   // [begin, end) pairs (flattened): in a separator the columns near the
   // right-hand side tend to be consecutive, so a dot product over a run is
   // as contiguous as the unpruned one. Returns the factor entries read.
-  template <int W>
-  std::size_t forward_supernode_pruned(const Supernodal_factor::Supernode& sn, int first,
-                                       double* ys, double* y, double drop_below,
+  template <int W, class T>
+  std::size_t forward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
+                                       int first, double* ys, double* y, double drop_below,
                                        std::vector<int>& runs) const {
     const auto& F = m_factor;
-    const double* diagonal = F.value.data() + sn.diagonal;
+    const T* diagonal = entries + sn.diagonal;
     runs.clear();
     std::size_t kept = 0, read = 0;
     for (int r = first; r < sn.ncol; ++r) {
       double* yr = ys + r * W;
-      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      const T* l = diagonal + Supernodal_factor::triangle_row(r);
       for (std::size_t q = 0; q < runs.size(); q += 2)
         subtract_dot<W>(l, ys, runs[q], runs[q + 1], yr);
       read += kept + 1;
@@ -916,10 +948,10 @@ class Localized_cholesky_solver {
         runs.insert(runs.end(), {r, r + 1});
     }
     if (runs.empty()) return read;
-    const double* below = F.value.data() + sn.below;
+    const T* below = entries + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
     for (int t = 0; t < sn.nbelow; ++t) {
-      const double* l = below + static_cast<std::size_t>(t) * sn.ncol;
+      const T* l = below + static_cast<std::size_t>(t) * sn.ncol;
       double* target = y + static_cast<std::size_t>(below_rows[t]) * W;
       for (std::size_t q = 0; q < runs.size(); q += 2)
         subtract_dot<W>(l, ys, runs[q], runs[q + 1], target);
@@ -935,10 +967,10 @@ class Localized_cholesky_solver {
   // of four rows with the solutions at or below the threshold propagated as
   // zeros, and a group skipped when all four are. `kept` receives the rows
   // below that are kept. Returns the factor entries read.
-  template <int W>
-  std::size_t backward_supernode_pruned(const Supernodal_factor::Supernode& sn, int first,
-                                        double* ys, const double* y, double drop_below,
-                                        std::vector<int>& kept) const {
+  template <int W, class T>
+  std::size_t backward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
+                                        int first, double* ys, const double* y,
+                                        double drop_below, std::vector<int>& kept) const {
     const auto& F = m_factor;
     const int* below_rows = F.row_index.data() + sn.below_rows;
     kept.clear();
@@ -948,15 +980,15 @@ class Localized_cholesky_solver {
     std::size_t read = kept.size() * width;
     if (static_cast<int>(kept.size()) == sn.nbelow) {
       // Nothing to skip below: the register-blocked kernel of the full solve.
-      backward_below<W>(sn, first, ys, y, sn.ncol);
+      backward_below<W>(entries, sn, first, ys, y, sn.ncol);
     } else {
-      subtract_rows_below<W>(sn, first, ys, y, sn.ncol, static_cast<int>(kept.size()),
+      subtract_rows_below<W>(entries, sn, first, ys, y, sn.ncol, static_cast<int>(kept.size()),
                              [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
     }
-    const double* diagonal = F.value.data() + sn.diagonal;
+    const T* diagonal = entries + sn.diagonal;
     int r = sn.ncol - 1;
     for (; r - 3 >= first; r -= 4) {
-      const double* l[4];
+      const T* l[4];
       std::array<std::array<double, W>, 4> x;
       bool any = false;
       for (int k = 0; k < 4; ++k) {
@@ -984,7 +1016,7 @@ class Localized_cholesky_solver {
       for (int w = 0; w < W; ++w) yr[w] *= inverse;
       ++read;
       if (!above<W>(yr, drop_below)) continue;
-      const double* l = diagonal + Supernodal_factor::triangle_row(r);
+      const T* l = diagonal + Supernodal_factor::triangle_row(r);
       for (int a = first; a < r; ++a)
         for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * yr[w];
       read += static_cast<std::size_t>(r - first);
@@ -998,12 +1030,12 @@ class Localized_cholesky_solver {
   // chain every update of a column through a store and a load). Wider:
   // by rows (backward_below_by_rows), since a block at a time walks the
   // row-major rows below once per block, a few entries from each row.
-  template <int W>
-  void backward_below(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                      const double* y, int end) const {
+  template <int W, class T>
+  void backward_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
+                      double* ys, const double* y, int end) const {
     constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
-    if (end - first > block) return backward_below_by_rows<W>(sn, first, ys, y, end);
-    const double* below = m_factor.value.data() + sn.below;
+    if (end - first > block) return backward_below_by_rows<W>(entries, sn, first, ys, y, end);
+    const T* below = entries + sn.below;
     const int* below_rows = m_factor.row_index.data() + sn.below_rows;
     int c = first;
     for (; c + block <= end; c += block)
@@ -1029,8 +1061,8 @@ class Localized_cholesky_solver {
   // ys[a * W + w] -= sum over k < 4 of l[k][a] * x[k][w], for a in
   // [begin, end): four solved rows subtracted in one pass over ys (each of
   // its rows read and written once per four rows of L).
-  template <int W>
-  static void subtract_four_rows(const double* const (&l)[4],
+  template <int W, class T>
+  static void subtract_four_rows(const T* const (&l)[4],
                                  const std::array<std::array<double, W>, 4>& x, int begin,
                                  int end, double* ys) {
     for (int a = begin; a < end; ++a)
@@ -1044,25 +1076,25 @@ class Localized_cholesky_solver {
   // partial solutions in ys once (ys stays in the first-level cache). Per
   // solve on a 711k-vertex mesh this read the rows below at about twice the
   // speed of the blocked kernel (doc/performance.md).
-  template <int W>
-  void backward_below_by_rows(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                              const double* y, int end) const {
-    subtract_rows_below<W>(sn, first, ys, y, end, sn.nbelow, [](int i) { return i; });
+  template <int W, class T>
+  void backward_below_by_rows(const T* entries, const Supernodal_factor::Supernode& sn,
+                              int first, double* ys, const double* y, int end) const {
+    subtract_rows_below<W>(entries, sn, first, ys, y, end, sn.nbelow, [](int i) { return i; });
   }
 
   // The rows below a supernode numbered `row(0)`, ..., `row(count - 1)`
   // (ascending) subtracted from its columns [first, end), four rows at a
   // time: backward_below_by_rows takes them all, a pruned back substitution
   // the kept ones.
-  template <int W, class Row>
-  void subtract_rows_below(const Supernodal_factor::Supernode& sn, int first, double* ys,
-                           const double* y, int end, int count, Row row) const {
-    const double* below = m_factor.value.data() + sn.below;
+  template <int W, class T, class Row>
+  void subtract_rows_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
+                           double* ys, const double* y, int end, int count, Row row) const {
+    const T* below = entries + sn.below;
     const int* below_rows = m_factor.row_index.data() + sn.below_rows;
     const std::size_t stride = static_cast<std::size_t>(sn.ncol);
     int i = 0;
     for (; i + 4 <= count; i += 4) {
-      const double* l[4];
+      const T* l[4];
       std::array<std::array<double, W>, 4> x;
       for (int k = 0; k < 4; ++k) {
         const int t = row(i + k);
@@ -1074,7 +1106,7 @@ class Localized_cholesky_solver {
     }
     for (; i < count; ++i) {
       const int t = row(i);
-      const double* l = below + static_cast<std::size_t>(t) * stride;
+      const T* l = below + static_cast<std::size_t>(t) * stride;
       std::array<double, W> a;
       for (int w = 0; w < W; ++w) a[w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
       for (int c = first; c < end; ++c)

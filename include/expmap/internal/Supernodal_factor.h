@@ -4,12 +4,14 @@
 #define EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
 
 #include <expmap/Cholesky_factor_view.h>
+#include <expmap/Factor_precision.h>
 #include <expmap/internal/Huge_page_allocator.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace expmap {
@@ -32,6 +34,10 @@ namespace internal {
 ///
 /// Built from any `Cholesky_factor_view` (an LDL^T factor is scaled to
 /// LL^T), so every solver model gets the same kernel.
+///
+/// The entries are kept in double precision or, to halve the memory a
+/// solve streams, rounded to single precision (`Factor_precision`); the
+/// solves accumulate in double either way.
 struct Supernodal_factor {
   struct Supernode {
     int first_column = 0;     // columns first_column .. first_column + ncol - 1
@@ -48,11 +54,27 @@ struct Supernodal_factor {
   std::vector<int> supernode_of_column;
   // The arrays a solve reads in scattered pieces (see Huge_page_allocator).
   std::vector<int, Huge_page_allocator<int>> row_index;
+  // The entries, in one of the two precisions (the other array is empty).
   std::vector<double, Huge_page_allocator<double>> value;
+  std::vector<float, Huge_page_allocator<float>> single_value;
   std::vector<int> permutation;          // pivot -> row of A
   std::vector<int> inverse_permutation;  // row of A -> pivot
+  Factor_precision precision = Factor_precision::double_precision;
 
-  std::size_t number_of_entries() const { return value.size(); }
+  std::size_t number_of_entries() const { return value.size() + single_value.size(); }
+  bool is_single_precision() const { return precision == Factor_precision::single_precision; }
+  /// Bytes held by the entries.
+  std::size_t value_bytes() const {
+    return value.size() * sizeof(double) + single_value.size() * sizeof(float);
+  }
+  /// The entries as `T` (double or float: the precision they are kept in).
+  template <class T>
+  const T* values() const {
+    if constexpr (std::is_same_v<T, float>)
+      return single_value.data();
+    else
+      return value.data();
+  }
 
   /// Offset of row r of a packed lower-triangular diagonal block.
   static std::size_t triangle_row(int r) {
@@ -60,9 +82,12 @@ struct Supernodal_factor {
   }
 };
 
-/// Regroups the factor of `view` into fundamental supernodes.
+/// Regroups the factor of `view` into fundamental supernodes, its entries
+/// kept in `precision`.
 /// \throws std::runtime_error if an LDL^T factor has a non-positive pivot.
-inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view) {
+inline Supernodal_factor make_supernodal_factor(
+    const Cholesky_factor_view& view,
+    Factor_precision precision = Factor_precision::double_precision) {
   const int n = view.size;
   Supernodal_factor f;
   f.size = n;
@@ -104,7 +129,18 @@ inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view
     supernode_end.push_back(end);
     j = end;
   }
-  f.value.assign(values, 0.0);
+  f.precision = precision;
+  const bool single = precision == Factor_precision::single_precision;
+  if (single)
+    f.single_value.assign(values, 0.0f);
+  else
+    f.value.assign(values, 0.0);
+  auto store = [&f, single](std::size_t offset, double v) {
+    if (single)
+      f.single_value[offset] = static_cast<float>(v);
+    else
+      f.value[offset] = v;
+  };
   f.row_index.reserve(rows_below);
   f.supernode.reserve(supernode_end.size());
 
@@ -132,16 +168,16 @@ inline Supernodal_factor make_supernodal_factor(const Cholesky_factor_view& view
       const int col = j + c;
       const double d = diagonal_of(col);
       const double scale = view.unit_diagonal ? d : 1.0;  // LDL^T -> LL^T
-      f.value[s.diagonal + Supernodal_factor::triangle_row(c) + c] = d;
+      store(s.diagonal + Supernodal_factor::triangle_row(c) + c, d);
       for (int q = first[col]; q < view.column_start[col + 1]; ++q) {
         const int row = view.row_index[q];
         const double v = view.value[q] * scale;
         if (row < end) {
-          f.value[s.diagonal + Supernodal_factor::triangle_row(row - j) + c] = v;
+          store(s.diagonal + Supernodal_factor::triangle_row(row - j) + c, v);
         } else {
           const int t = static_cast<int>(std::lower_bound(below_rows, below_rows + s.nbelow, row) -
                                          below_rows);
-          f.value[s.below + static_cast<std::size_t>(t) * s.ncol + c] = v;
+          store(s.below + static_cast<std::size_t>(t) * s.ncol + c, v);
         }
       }
       f.supernode_of_column[col] = static_cast<int>(f.supernode.size());

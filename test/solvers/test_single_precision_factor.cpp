@@ -1,0 +1,123 @@
+// A factor kept in single precision: the same solves, to the round-off of
+// floats, in half the memory.
+#include <expmap/Cholmod_solver.h>
+#include <expmap/internal/Localized_cholesky_solver.h>
+
+#include "Random_grid_operator.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+namespace {
+
+using expmap::Factor_precision;
+using expmap::internal::Localized_cholesky_solver;
+using expmap::internal::Rhs_entry;
+
+// One matrix factored once, its localized solver in both precisions.
+struct Both_precisions {
+  Both_precisions(int nx, int ny, double diagonal, double weight_scale) {
+    const auto A = expmap_test::random_grid_operator(nx, ny, 3, diagonal, weight_scale);
+    n = static_cast<int>(A.rows());
+    solver.factor(A);
+    exact = Localized_cholesky_solver(solver.factor_view());
+    single = Localized_cholesky_solver(solver.factor_view(), Factor_precision::single_precision);
+  }
+  // Every row of the solve of `b` (`width` columns) by `local`.
+  std::vector<double> solve_all(const Localized_cholesky_solver& local,
+                                const std::vector<Rhs_entry>& b, int width) const {
+    std::vector<int> rows(static_cast<std::size_t>(n));
+    std::iota(rows.begin(), rows.end(), 0);
+    std::vector<double> out(rows.size() * static_cast<std::size_t>(width));
+    auto ws = local.make_workspace();
+    local.solve(b, width, rows.data(), rows.size(), out.data(), *ws);
+    return out;
+  }
+  int n = 0;
+  expmap::Cholmod_solver solver;
+  Localized_cholesky_solver exact, single;
+};
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(single_precision_halves_the_entries_memory) {
+  const Both_precisions f(40, 30, 1.0, 10.0);
+  BOOST_TEST((f.exact.precision() == Factor_precision::double_precision));
+  BOOST_TEST((f.single.precision() == Factor_precision::single_precision));
+  BOOST_TEST(f.single.number_of_entries() == f.exact.number_of_entries());
+  BOOST_TEST(f.exact.entry_bytes() == f.exact.number_of_entries() * sizeof(double));
+  BOOST_TEST(2 * f.single.entry_bytes() == f.exact.entry_bytes());
+}
+
+// A heat system is an M-matrix: its factor's off-diagonal entries are
+// non-positive, so a nonnegative right-hand side is solved without
+// cancellation and rounding the factor perturbs every value by a small
+// multiple of float round-off relative to itself, however small the heat.
+BOOST_AUTO_TEST_CASE(heat_values_keep_their_relative_accuracy) {
+  const Both_precisions f(60, 50, 1.0, 1.0);
+  const std::vector<Rhs_entry> b{{25 * 60 + 30, 0, 1.0}};
+  const std::vector<double> x = f.solve_all(f.exact, b, 1), y = f.solve_all(f.single, b, 1);
+  double worst = 0, smallest = 1;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    BOOST_TEST_REQUIRE(x[i] > 0);
+    worst = std::max(worst, std::abs(y[i] - x[i]) / x[i]);
+    smallest = std::min(smallest, x[i]);
+  }
+  BOOST_TEST_MESSAGE("heat from 1 to " << smallest << ": largest relative change " << worst);
+  BOOST_TEST(smallest < 1e-12);  // the heat spans many binades
+  BOOST_TEST(worst < 1e-6);
+  BOOST_TEST(worst > 0);  // the entries were rounded
+}
+
+// A signed right-hand side (the Poisson step's, the star gradient's) can
+// cancel: the change is bounded relative to the solution's largest value.
+BOOST_AUTO_TEST_CASE(signed_solves_keep_their_accuracy_relative_to_the_solution) {
+  const Both_precisions f(60, 50, 0.01, 1.0);
+  const std::vector<Rhs_entry> b{
+      {10 * 60 + 10, 0, 1.0}, {40 * 60 + 50, 0, -1.0}, {30 * 60 + 30, 1, 2.0}, {31 * 60 + 30, 1, -2.0}};
+  const std::vector<double> x = f.solve_all(f.exact, b, 2), y = f.solve_all(f.single, b, 2);
+  for (int c = 0; c < 2; ++c) {
+    double scale = 0, worst = 0;
+    for (int i = 0; i < f.n; ++i) scale = std::max(scale, std::abs(x[2 * i + c]));
+    for (int i = 0; i < f.n; ++i) worst = std::max(worst, std::abs(y[2 * i + c] - x[2 * i + c]));
+    BOOST_TEST_MESSAGE("column " << c << ": largest change " << worst / scale << " of the largest value");
+    BOOST_TEST(worst < 1e-6 * scale);
+  }
+}
+
+// The largest-first search and the pruned solves run on the rounded entries
+// as on the exact ones.
+BOOST_AUTO_TEST_CASE(largest_first_and_pruned_solves_work_in_single_precision) {
+  const Both_precisions f(90, 80, 1.0, 20.0);
+  const std::vector<Rhs_entry> b{{40 * 90 + 45, 0, 1.0}};
+  auto largest = [&](const Localized_cholesky_solver& local, std::size_t count) {
+    std::vector<int> rows;
+    std::vector<double> values;
+    auto ws = local.make_workspace();
+    local.solve_largest(b, count, rows, values, *ws);
+    std::vector<std::size_t> order(rows.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+      return values[p] > values[q] || (values[p] == values[q] && rows[p] < rows[q]);
+    });
+    std::vector<int> top;
+    for (std::size_t k = 0; k < count; ++k) top.push_back(rows[order[k]]);
+    std::sort(top.begin(), top.end());
+    return top;
+  };
+  BOOST_TEST(largest(f.single, 700) == largest(f.exact, 700));
+
+  std::vector<int> rows(static_cast<std::size_t>(f.n));
+  std::iota(rows.begin(), rows.end(), 0);
+  const std::vector<double> x = f.solve_all(f.exact, b, 1);
+  std::vector<double> pruned(rows.size());
+  auto ws = f.single.make_workspace();
+  const double smallest = *std::min_element(x.begin(), x.end());
+  f.single.solve_pruned(b, 1, rows.data(), rows.size(), pruned.data(), *ws, 1e-14 * smallest);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    BOOST_TEST(std::abs(pruned[i] - x[i]) < 2e-6 * x[i]);
+}
