@@ -7,8 +7,7 @@
 /// The "stream floor" of a localized solve: the time one pass over as many
 /// (row index, value) pairs as the solve read from the Cholesky factors
 /// takes, stored as a factor stores them (an int array and a double array,
-/// as in `Cholesky_factor_view`; a float array for factors kept in single
-/// precision, `Heat_options::factor_precision`).
+/// as in `Cholesky_factor_view`).
 ///
 /// A localized triangular solve must read every factor entry of the
 /// columns it visits at least once, so no implementation of it can beat
@@ -38,53 +37,30 @@ namespace expmap_bench {
 
 class Stream_floor {
  public:
-  /// A floor for factors whose values are floats (`single_precision`) or
-  /// doubles.
-  explicit Stream_floor(bool single_precision = false) : m_single(single_precision) {}
-
   /// Allocates and fills the buffers for passes of up to `max_entries`.
   void prepare(std::size_t max_entries) {
     if (max_entries <= m_row.size()) return;
     release();
     m_row.resize(max_entries);
-    if (m_single)
-      m_single_value.resize(max_entries);
-    else
-      m_value.resize(max_entries);
+    m_value.resize(max_entries);
     for (std::size_t k = 0; k < max_entries; ++k) {
       m_row[k] = static_cast<int>(k & 0xfffff);
-      const double v = 1.0 + 1e-9 * static_cast<double>(k & 0xffff);
-      if (m_single)
-        m_single_value[k] = static_cast<float>(v);
-      else
-        m_value[k] = v;
+      m_value[k] = 1.0 + 1e-9 * static_cast<double>(k & 0xffff);
     }
   }
 
-  /// Milliseconds for one streaming pass over `entries` (int, value) pairs.
+  /// Milliseconds for one streaming pass over `entries` (int, double) pairs.
   double measure_ms(std::size_t entries) {
     if (entries == 0) return 0.0;
     prepare(entries);
-    return m_single ? pass_ms(m_single_value.data(), entries) : pass_ms(m_value.data(), entries);
-  }
-
-  /// Frees the buffers.
-  void release() {
-    std::vector<int>().swap(m_row);
-    std::vector<double>().swap(m_value);
-    std::vector<float>().swap(m_single_value);
-  }
-
- private:
-  template <class T>
-  double pass_ms(const T* value, std::size_t entries) {
     const int* row = m_row.data();
+    const double* value = m_value.data();
     Stopwatch watch;
     // Four independent sums each, so neither the adds' latency nor the
     // order of floating-point additions (which the compiler must keep)
     // limits the loop below the memory's speed.
     std::int64_t r0 = 0, r1 = 0, r2 = 0, r3 = 0;
-    T v0 = 0, v1 = 0, v2 = 0, v3 = 0;
+    double v0 = 0, v1 = 0, v2 = 0, v3 = 0;
     std::size_t k = 0;
     for (; k + 4 <= entries; k += 4) {
       r0 += row[k];
@@ -101,15 +77,19 @@ class Stream_floor {
       v0 += value[k];
     }
     const double ms = watch.milliseconds();
-    m_sink = m_sink + static_cast<double>((v0 + v1) + (v2 + v3)) +
-             static_cast<double>((r0 + r1) + (r2 + r3));
+    m_sink = m_sink + (v0 + v1) + (v2 + v3) + static_cast<double>((r0 + r1) + (r2 + r3));
     return ms;
   }
 
-  bool m_single;
+  /// Frees the buffers.
+  void release() {
+    std::vector<int>().swap(m_row);
+    std::vector<double>().swap(m_value);
+  }
+
+ private:
   std::vector<int> m_row;
   std::vector<double> m_value;
-  std::vector<float> m_single_value;
   volatile double m_sink = 0;
 };
 

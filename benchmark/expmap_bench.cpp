@@ -393,8 +393,7 @@ class Benchmark {
     const std::size_t n = st.vertices;
     std::vector<Query_record> records;
     std::vector<Summary_row> rows;
-    Stream_floor floor(m_heat_options.factor_precision ==
-                       expmap::Factor_precision::single_precision);
+    Stream_floor floor;
     // The per-fraction methods take turns (time_interleaved); the baselines
     // are constructed first. heat-full runs on its own afterwards: its time
     // does not depend on the fraction.
