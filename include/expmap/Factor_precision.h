@@ -9,17 +9,18 @@
 namespace expmap {
 
 /// \ingroup PkgExpmapRef
-/// The precision the Cholesky factors are kept in between queries. The
-/// localized solves accumulate in double precision either way; only the
-/// factor's entries are rounded.
+/// The precision a Cholesky factor is kept in between queries
+/// (`Heat_options::poisson_factor_precision`). The localized solves
+/// accumulate in double precision either way; only the factor's entries are
+/// rounded.
 enum class Factor_precision {
   /// The solver model's factor as it is.
   double_precision,
   /// Entries rounded to single precision: half the memory, and the
-  /// triangular solves, which stream the factor, about 1.2-1.35x faster on
-  /// meshes of a million vertices and more. The maps move by a few 1e-7 of
-  /// the patch radius in distance and radians in angle on the meshes of
-  /// doc/performance.md: far below the method's own error, but not zero.
+  /// triangular solves, which stream the factor, faster. Only for factors
+  /// whose entries stay within float's range: a Laplacian's fill decays
+  /// slowly with distance, a heat system's exponentially (on a 711k-vertex
+  /// mesh below 1e-38, where floats lose their digits).
   single_precision
 };
 

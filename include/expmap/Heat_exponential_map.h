@@ -128,12 +128,13 @@ struct Heat_options {
   /// the heat matrix is an M-matrix (intrinsic Delaunay Laplacian and no
   /// obtuse angle opposite a boundary edge); 0 never prunes. At most 1e-10.
   double pruning_tolerance = 1e-14;
-  /// The precision the factors are kept in between queries. Single
-  /// precision halves their memory and makes queries on meshes of a million
-  /// vertices and more about 1.2-1.35x faster, and moves the maps by a few
-  /// 1e-7 (doc/performance.md); double precision keeps every query equal
-  /// to the whole-mesh solve to round-off.
-  Factor_precision factor_precision = Factor_precision::double_precision;
+  /// The precision the Poisson system's factor is kept in between queries.
+  /// Single precision halves its memory and made queries 1.05-1.18x faster
+  /// on meshes of 711k and 2.85M vertices (none on 44k), moving distances by
+  /// at most 4e-7 of the patch radius (doc/performance.md). The heat
+  /// factors stay in double precision: their entries decay exponentially
+  /// with distance, below the smallest float on large patches.
+  Factor_precision poisson_factor_precision = Factor_precision::double_precision;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   /// Geometric directions next to the source, heat directions beyond.
@@ -373,7 +374,8 @@ class Heat_exponential_map
       }
     }
     internal::make_identity_row(L, identity_rows);
-    m_poisson_local = factor_locally(L, "Poisson", &m_heat_local);
+    m_poisson_local =
+        factor_locally(L, "Poisson", &m_heat_local, m_options.poisson_factor_precision);
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the
@@ -399,9 +401,10 @@ class Heat_exponential_map
   }
   // A solver model reports failure in its own way (CHOLMOD's status, Eigen's
   // info); the user sees one Computation_error naming the system.
-  internal::Localized_cholesky_solver factor_locally(
+  static internal::Localized_cholesky_solver factor_locally(
       const internal::Sparse_matrix& A, const char* system,
-      const internal::Localized_cholesky_solver* like = nullptr) {
+      const internal::Localized_cholesky_solver* like = nullptr,
+      Factor_precision precision = Factor_precision::double_precision) {
     Solver solver;
     try {
       if (like)
@@ -415,7 +418,7 @@ class Heat_exponential_map
                               e.what() + "); nearly degenerate faces make it numerically "
                               "indefinite: repair the mesh (expmap --repair) or remesh it");
     }
-    return internal::Localized_cholesky_solver(solver.factor_view(), m_options.factor_precision);
+    return internal::Localized_cholesky_solver(solver.factor_view(), precision);
   }
 
   // Pruned source-heat solves rely on the distance-heat matrix being an
