@@ -130,8 +130,9 @@ struct Heat_options {
   double pruning_tolerance = 1e-14;
   /// The precision the Poisson system's factor is kept in between queries.
   /// Single precision halves its memory and made queries 1.05-1.18x faster
-  /// on meshes of 711k and 2.85M vertices (none on 44k), moving distances by
-  /// at most 4e-7 of the patch radius (doc/performance.md). The heat
+  /// on meshes of 711k and 2.85M vertices (up to 1.09x on 44k, at 25%
+  /// patches), moving distances by at most 4e-7 of the patch radius
+  /// (doc/performance.md). The heat
   /// factors stay in double precision: their entries decay exponentially
   /// with distance, below the smallest float on large patches.
   Factor_precision poisson_factor_precision = Factor_precision::double_precision;
