@@ -10,8 +10,8 @@
 
 #include <expmap/Angle_estimator.h>
 #include <expmap/Cholmod_solver.h>
-#include <expmap/Factor_precision.h>
 #include <expmap/Errors.h>
+#include <expmap/Factor_precision.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
@@ -132,9 +132,9 @@ struct Heat_options {
   /// Single precision halves its memory and made queries 1.05-1.18x faster
   /// on meshes of 711k and 2.85M vertices (up to 1.09x on 44k, at 25%
   /// patches), moving distances by at most 4e-7 of the patch radius
-  /// (doc/performance.md). The heat
-  /// factors stay in double precision: their entries decay exponentially
-  /// with distance, below the smallest float on large patches.
+  /// (doc/performance.md). The heat factors stay in double precision: their
+  /// entries decay exponentially with distance, below the smallest float on
+  /// large patches.
   Factor_precision poisson_factor_precision = Factor_precision::double_precision;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;

@@ -4,6 +4,7 @@
 #define EXPMAP_INTERNAL_LOCALIZED_CHOLESKY_SOLVER_H
 
 #include <expmap/Cholesky_factor_view.h>
+#include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Huge_page_allocator.h>
 #include <expmap/internal/Supernodal_factor.h>

@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstddef>
 #include <stdexcept>
-#include <type_traits>
 #include <vector>
 
 namespace expmap {
@@ -66,14 +65,6 @@ struct Supernodal_factor {
   /// Bytes held by the entries.
   std::size_t value_bytes() const {
     return value.size() * sizeof(double) + single_value.size() * sizeof(float);
-  }
-  /// The entries as `T` (double or float: the precision they are kept in).
-  template <class T>
-  const T* values() const {
-    if constexpr (std::is_same_v<T, float>)
-      return single_value.data();
-    else
-      return value.data();
   }
 
   /// Offset of row r of a packed lower-triangular diagonal block.
