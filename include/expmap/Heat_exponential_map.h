@@ -226,6 +226,13 @@ class Heat_exponential_map
     return m_heat_local.number_of_entries() + m_poisson_local.number_of_entries() +
            (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
+  /// Bytes held by the factors' entries, the bulk of the object's memory
+  /// between queries: 8 per entry, 4 in a single-precision Poisson factor
+  /// (`Heat_options::poisson_factor_precision`).
+  std::size_t factor_bytes() const {
+    return m_heat_local.entry_bytes() + m_poisson_local.entry_bytes() +
+           (m_separate_distance_heat ? m_distance_heat_local.entry_bytes() : 0);
+  }
   using Front::number_of_vertices;
   /// The settings the object was built with.
   const Heat_options& options() const { return m_options; }
