@@ -43,11 +43,9 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
                            kept (default 3); the methods take turns per
                            source, so a change of load hits them alike
   --time-factor M          Heat_options::time_factor (default: the library's)
-  --poisson-factor-precision P
-                           double | single:
-                           Heat_options::poisson_factor_precision (default:
-                           double, the library's; the stream floor still
-                           counts every factor entry as a double)
+  --factor-precision P     double | single: Heat_options::factor_precision
+                           (default: double, the library's; the stream
+                           floor counts every factor entry as a double)
   --csv OUT                one row per mesh, method and fraction
   --stats CSV2             one row per mesh: precompute time, peak memory,
                            factor sizes
@@ -73,7 +71,7 @@ struct Bench_options {
   unsigned seed = 1;
   std::size_t repeats = 3;
   double time_factor = 0;  // 0: the library's default
-  bool single_precision_poisson_factor = false;
+  bool single_precision_factors = false;
   std::string csv, stats, detail;
   bool help = false;
 };
@@ -156,10 +154,10 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
     } else if (arg == "--time-factor") {
       o.time_factor = parse_double(arg, value);
       if (!(o.time_factor > 0)) throw Usage_error("--time-factor must be positive");
-    } else if (arg == "--poisson-factor-precision") {
+    } else if (arg == "--factor-precision") {
       if (value != "double" && value != "single")
-        throw Usage_error("--poisson-factor-precision must be 'double' or 'single' (got '" + value + "')");
-      o.single_precision_poisson_factor = value == "single";
+        throw Usage_error("--factor-precision must be 'double' or 'single' (got '" + value + "')");
+      o.single_precision_factors = value == "single";
     } else if (arg == "--csv") {
       o.csv = value;
     } else if (arg == "--stats") {

@@ -326,8 +326,8 @@ class Benchmark {
          "mesh,method,fraction,source,patch_vertices,ms,forward_nodes,backward_nodes,"
          "factor_entries,stream_floor_ms,solve_ms");
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
-    if (options.single_precision_poisson_factor)
-      m_heat_options.poisson_factor_precision = expmap::Factor_precision::single_precision;
+    if (options.single_precision_factors)
+      m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
   }
 
   void run(const std::vector<Mesh_job>& jobs) {
@@ -722,7 +722,7 @@ int main(int argc, char** argv) {
               << "), each query the fastest of " << options.repeats << " runs, methods taking turns";
     if (options.full_sources > 0)
       std::cout << ", heat-full on the first " << options.full_sources;
-    if (options.single_precision_poisson_factor) std::cout << "; single-precision Poisson factor";
+    if (options.single_precision_factors) std::cout << "; single-precision factors";
     std::cout << "\n";
     Benchmark benchmark(options);
     benchmark.run(mesh_jobs(options));

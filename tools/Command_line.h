@@ -51,7 +51,7 @@ struct Compute_arguments {
   std::optional<double> distance_time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
-  std::optional<std::string> poisson_factor_precision;  // "double" or "single"
+  std::optional<std::string> factor_precision;  // "double" or "single"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<std::array<double, 3>> reference;
@@ -239,12 +239,12 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       if (*a.vertex_area != "mixed-voronoi" && *a.vertex_area != "barycentric")
         throw Usage_error("--vertex-area must be 'mixed-voronoi' or 'barycentric' (got '" +
                           *a.vertex_area + "')");
-    } else if (name == "--poisson-factor-precision") {
-      once(a.poisson_factor_precision.has_value());
-      a.poisson_factor_precision = take_value();
-      if (*a.poisson_factor_precision != "double" && *a.poisson_factor_precision != "single")
-        throw Usage_error("--poisson-factor-precision must be 'double' or 'single' (got '" +
-                          *a.poisson_factor_precision + "')");
+    } else if (name == "--factor-precision") {
+      once(a.factor_precision.has_value());
+      a.factor_precision = take_value();
+      if (*a.factor_precision != "double" && *a.factor_precision != "single")
+        throw Usage_error("--factor-precision must be 'double' or 'single' (got '" +
+                          *a.factor_precision + "')");
     } else if (name == "--angles") {
       once(a.angles.has_value());
       try {

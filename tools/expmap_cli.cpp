@@ -93,8 +93,8 @@ expmap::Heat_options heat_options(const Compute_arguments& a) {
   if (a.vertex_area)
     options.vertex_area = *a.vertex_area == "barycentric" ? expmap::Vertex_area::barycentric
                                                           : expmap::Vertex_area::mixed_voronoi;
-  if (a.poisson_factor_precision)
-    options.poisson_factor_precision = *a.poisson_factor_precision == "single"
+  if (a.factor_precision)
+    options.factor_precision = *a.factor_precision == "single"
                                    ? expmap::Factor_precision::single_precision
                                    : expmap::Factor_precision::double_precision;
   if (a.angles) options.angle_estimator = *a.angles;
@@ -130,8 +130,8 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   d << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT")
     << (options.vertex_area == expmap::Vertex_area::barycentric ? ", barycentric areas" : "")
-    << (options.poisson_factor_precision == expmap::Factor_precision::single_precision
-            ? ", single-precision Poisson factor"
+    << (options.factor_precision == expmap::Factor_precision::single_precision
+            ? ", single-precision factors"
             : "")
     << ", "
     << expmap::to_string(options.angle_estimator) << " angles, chords "
@@ -356,10 +356,10 @@ std::string map_options_help() {
        "  --vertex-area A      heat only: mixed-voronoi | barycentric, the heat step's\n"
        "                       mass matrix; the former gives more accurate angles on\n"
        "                       irregular triangles (default: mixed-voronoi)\n"
-       "  --poisson-factor-precision P  heat only: double | single, how the distance\n"
-       "                       step's factor is kept between queries; single halves\n"
-       "                       its memory and is faster on large meshes, and moves\n"
-       "                       distances by about 1e-7 of the radius (default: double)\n"
+       "  --factor-precision P heat only: double | single, how the factors are kept\n"
+       "                       between queries; single about halves their memory and\n"
+       "                       is faster on large meshes, and moves the map by about\n"
+       "                       1e-7 of its radius (default: double)\n"
        "  --angles A           heat only: how the angle is read off the heat at the\n"
        "                       source's one-ring: heat-quadratic-fit (least-squares\n"
        "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
@@ -392,7 +392,7 @@ std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
          "                      [--method M] [--time-factor T] [--distance-time-factor T]\n"
          "                      [--laplacian L] [--vertex-area A]\n"
-         "                      [--poisson-factor-precision P] [--angles A]\n"
+         "                      [--factor-precision P] [--angles A]\n"
          "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
          "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
          "\n"
@@ -418,7 +418,7 @@ std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
          "                    [--distance-time-factor T] [--laplacian L] [--vertex-area A]\n"
-         "                    [--poisson-factor-precision P] [--angles A]\n"
+         "                    [--factor-precision P] [--angles A]\n"
          "                    [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
          "                    -o OUT [-o OUT ...]\n"
@@ -542,11 +542,11 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
   if (!method.takes_heat_options && (a.time_factor || a.distance_time_factor || a.laplacian ||
-                                     a.vertex_area || a.poisson_factor_precision || a.angles ||
+                                     a.vertex_area || a.factor_precision || a.angles ||
                                      a.near_source_blend))
     throw Usage_error(
         "--time-factor, --distance-time-factor, --laplacian, --vertex-area, "
-        "--poisson-factor-precision, --angles and --near-source-blend apply only to --method heat");
+        "--factor-precision, --angles and --near-source-blend apply only to --method heat");
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))

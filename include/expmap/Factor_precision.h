@@ -9,18 +9,18 @@
 namespace expmap {
 
 /// \ingroup PkgExpmapRef
-/// The precision a Cholesky factor is kept in between queries
-/// (`Heat_options::poisson_factor_precision`). The localized solves
-/// accumulate in double precision either way; only the factor's entries are
-/// rounded.
+/// The precision the Cholesky factors are kept in between queries
+/// (`Heat_options::factor_precision`). The localized solves accumulate in
+/// double precision either way; only the factors' entries are rounded.
 enum class Factor_precision {
-  /// The solver model's factor as it is.
+  /// The solver model's factors as they are.
   double_precision,
-  /// Entries rounded to single precision: half the memory, and the
-  /// triangular solves, which stream the factor, faster. Only for factors
-  /// whose entries stay within float's range: a Laplacian's fill decays
-  /// slowly with distance, a heat system's exponentially (on a 711k-vertex
-  /// mesh below 1e-38, where floats lose their digits).
+  /// Entries rounded to single precision wherever a float holds them to
+  /// its full 24 bits: every supernode of the factor whose nonzero entries
+  /// all lie in the normal float range. The others stay in double
+  /// precision: a heat system's factor decays exponentially away from the
+  /// diagonal, and on large meshes its top separators hold entries below
+  /// 1e-38, where a float keeps few or no digits.
   single_precision
 };
 

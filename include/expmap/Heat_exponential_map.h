@@ -128,14 +128,14 @@ struct Heat_options {
   /// the heat matrix is an M-matrix (intrinsic Delaunay Laplacian and no
   /// obtuse angle opposite a boundary edge); 0 never prunes. At most 1e-10.
   double pruning_tolerance = 1e-14;
-  /// The precision the Poisson system's factor is kept in between queries.
-  /// Single precision halves its memory and made queries 1.05-1.18x faster
-  /// on meshes of 711k and 2.85M vertices (up to 1.09x on 44k, at 25%
-  /// patches), moving distances by at most 4e-7 of the patch radius
-  /// (doc/performance.md). The heat factors stay in double precision: their
-  /// entries decay exponentially with distance, below the smallest float on
-  /// large patches.
-  Factor_precision poisson_factor_precision = Factor_precision::double_precision;
+  /// The precision the factors are kept in between queries. Single
+  /// precision stores in floats every supernode whose entries a float holds
+  /// to full precision (the heat factors' top separators, whose entries
+  /// decay below the float range, stay double): about half the memory, and
+  /// queries 1.1-1.2x faster on meshes of 711k and 2.85M vertices, moving
+  /// distances by at most 4e-7 of the patch radius and angles by at most
+  /// 1.7e-5 rad (doc/performance.md).
+  Factor_precision factor_precision = Factor_precision::double_precision;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   /// Geometric directions next to the source, heat directions beyond.
@@ -227,8 +227,8 @@ class Heat_exponential_map
            (m_separate_distance_heat ? m_distance_heat_local.number_of_entries() : 0);
   }
   /// Bytes held by the factors' entries, the bulk of the object's memory
-  /// between queries: 8 per entry, 4 in a single-precision Poisson factor
-  /// (`Heat_options::poisson_factor_precision`).
+  /// between queries: 8 per entry, 4 per entry kept in single precision
+  /// (`Heat_options::factor_precision`).
   std::size_t factor_bytes() const {
     return m_heat_local.entry_bytes() + m_poisson_local.entry_bytes() +
            (m_separate_distance_heat ? m_distance_heat_local.entry_bytes() : 0);
@@ -357,12 +357,13 @@ class Heat_exponential_map
     };
     {
       const internal::Sparse_matrix heat = heat_matrix(m_time_step);
-      m_heat_local = factor_locally(heat, "heat");
+      m_heat_local = factor_locally(heat, "heat", nullptr, m_options.factor_precision);
       if (!m_separate_distance_heat) prepare_pruning(heat);
     }
     if (m_separate_distance_heat) {
       const internal::Sparse_matrix distance_heat = heat_matrix(m_distance_time_step);
-      m_distance_heat_local = factor_locally(distance_heat, "distance heat", &m_heat_local);
+      m_distance_heat_local = factor_locally(distance_heat, "distance heat", &m_heat_local,
+                                             m_options.factor_precision);
       prepare_pruning(distance_heat);
     }
 
@@ -383,7 +384,7 @@ class Heat_exponential_map
     }
     internal::make_identity_row(L, identity_rows);
     m_poisson_local =
-        factor_locally(L, "Poisson", &m_heat_local, m_options.poisson_factor_precision);
+        factor_locally(L, "Poisson", &m_heat_local, m_options.factor_precision);
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the

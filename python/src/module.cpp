@@ -242,7 +242,7 @@ void bind_heat(py::module_& m) {
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     std::optional<double> distance_time_factor, py::handle laplacian,
-                    py::handle vertex_area, py::handle poisson_factor_precision,
+                    py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double region_growth,
                     double pruning_tolerance, py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
@@ -250,8 +250,8 @@ void bind_heat(py::module_& m) {
           options.distance_time_factor = distance_time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
           options.vertex_area = enum_argument<expmap::Vertex_area>(vertex_area, "vertex_area");
-          options.poisson_factor_precision =
-              enum_argument<expmap::Factor_precision>(poisson_factor_precision, "poisson_factor_precision");
+          options.factor_precision =
+              enum_argument<expmap::Factor_precision>(factor_precision, "factor_precision");
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.region_growth = region_growth;
@@ -268,7 +268,7 @@ void bind_heat(py::module_& m) {
         py::arg("distance_time_factor") = defaults.distance_time_factor,
         py::arg("laplacian") = defaults.laplacian,
         py::arg("vertex_area") = defaults.vertex_area,
-        py::arg("poisson_factor_precision") = defaults.poisson_factor_precision,
+        py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
         py::arg("pruning_tolerance") = defaults.pruning_tolerance,
@@ -284,10 +284,10 @@ void bind_heat(py::module_& m) {
         "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
         "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
         "    heat step's mass matrix.\n"
-        "poisson_factor_precision: a FactorPrecision or its name ('double_precision',\n"
-        "    'single_precision'): how the distance step's factor is kept between\n"
-        "    queries; single halves its memory and is faster on large meshes, and\n"
-        "    moves distances by about 1e-7 of the radius.\n"
+        "factor_precision: a FactorPrecision or its name ('double_precision',\n"
+        "    'single_precision'): how the factors are kept between queries; single\n"
+        "    about halves their memory and is faster on large meshes, and moves the\n"
+        "    map by about 1e-7 of its radius.\n"
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"

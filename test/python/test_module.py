@@ -63,7 +63,7 @@ def test_every_enum_member_is_accepted_by_name_and_value(cactus):
     for enum, option in ((expmap.AngleEstimator, "angle_estimator"),
                          (expmap.LaplacianMode, "laplacian"),
                          (expmap.VertexArea, "vertex_area"),
-                         (expmap.FactorPrecision, "poisson_factor_precision"),
+                         (expmap.FactorPrecision, "factor_precision"),
                          (expmap.PoissonRegularization, "regularization")):
         assert len(enum.__members__) >= 2
         for name, value in enum.__members__.items():
@@ -72,11 +72,11 @@ def test_every_enum_member_is_accepted_by_name_and_value(cactus):
             np.testing.assert_array_equal(by_name.uv, by_value.uv)
 
 
-def test_a_single_precision_poisson_factor_moves_distances_by_float_round_off(elephant):
+def test_single_precision_factors_move_distances_by_float_round_off(elephant):
     _, V, F = elephant
     double = expmap.HeatExponentialMap(V, F).compute(0, fraction=0.05)
     single = expmap.HeatExponentialMap(
-        V, F, poisson_factor_precision="single_precision").compute(0, fraction=0.05)
+        V, F, factor_precision="single_precision").compute(0, fraction=0.05)
     np.testing.assert_array_equal(single.vertices, double.vertices)
     radius = double.r.max()
     assert np.max(np.abs(single.r - double.r)) <= 1e-5 * radius

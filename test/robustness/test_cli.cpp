@@ -215,13 +215,13 @@ BOOST_AUTO_TEST_CASE(a_distance_time_factor_keeps_the_distances_of_that_time) {
   BOOST_TEST((csv_column(dir / "m50.csv", 1) != m10));
 }
 
-BOOST_AUTO_TEST_CASE(a_single_precision_poisson_factor_gives_distances_to_float_round_off) {
+BOOST_AUTO_TEST_CASE(single_precision_factors_give_distances_to_float_round_off) {
   const std::string query = "compute " + file("grid.off") + " --source 24 --vertices 20";
   BOOST_TEST_REQUIRE(run(query + " -o " + file("double.csv")) == 0, "stderr: " << err());
-  const std::string precision = " --poisson-factor-precision ";
+  const std::string precision = " --factor-precision ";
   BOOST_TEST_REQUIRE(run(query + precision + "single -o " + file("single.csv")) == 0,
                      "stderr: " << err());
-  BOOST_TEST(out().find("single-precision Poisson factor") != std::string::npos, out());
+  BOOST_TEST(out().find("single-precision factors") != std::string::npos, out());
   BOOST_TEST_REQUIRE(run(query + precision + "double -o " + file("double2.csv")) == 0,
                      "stderr: " << err());
   const auto r_double = csv_column(dir / "double.csv", 1);
@@ -248,7 +248,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--distance-time-factor", "--laplacian", "--vertex-area", "--poisson-factor-precision", "--angles",
+        "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision", "--angles",
         "--near-source-blend",
         "--reference",
         "--no-triangulate", "--repair", "--output"})
@@ -279,8 +279,8 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
   check_error(grid + " --source 0 --vertices 10 --distance-time-factor 0" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dgpc --distance-time-factor 1" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dem --near-source-blend 1,2" + csv, 2);
-  check_error(grid + " --source 0 --vertices 10 --poisson-factor-precision half" + csv, 2);
-  check_error(grid + " --source 0 --vertices 10 --method dgpc --poisson-factor-precision single" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --factor-precision half" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dgpc --factor-precision single" + csv, 2);
   check_error(grid + " --source 0 --radius", 2);
   check_error(grid + " --source 0 --vertices 10", 2);
   check_error("", 2);
@@ -433,7 +433,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
-        "--time-factor", "--distance-time-factor", "--laplacian", "--vertex-area", "--poisson-factor-precision",
+        "--time-factor", "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision",
         "--angles",
         "--near-source-blend", "--reference",
         "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})

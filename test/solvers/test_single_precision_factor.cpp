@@ -57,10 +57,8 @@ BOOST_AUTO_TEST_CASE(single_precision_halves_the_entries_memory) {
 // non-positive, so a nonnegative right-hand side is solved without
 // cancellation and rounding the factor perturbs every value by a small
 // multiple of float round-off relative to itself, as long as the factor's
-// entries stay above the smallest float. (On a 711k-vertex mesh a heat
-// factor's entries fall below it, and a 25% patch's heat then lost all its
-// digits at the region's edge: the heat map keeps its heat factors in
-// double precision, doc/performance.md.)
+// entries stay above the smallest float (below, supernodes_beyond_the_
+// float_range_stay_double).
 BOOST_AUTO_TEST_CASE(heat_values_keep_their_relative_accuracy) {
   const Both_precisions f(60, 50, 1.0, 1.0);
   const std::vector<Rhs_entry> b{{25 * 60 + 30, 0, 1.0}};
@@ -75,6 +73,27 @@ BOOST_AUTO_TEST_CASE(heat_values_keep_their_relative_accuracy) {
   BOOST_TEST(smallest < 1e-12);  // the heat spans many binades
   BOOST_TEST(worst < 1e-6);
   BOOST_TEST(worst > 0);  // the entries were rounded
+}
+
+// A heat system with fast decay: the factor's entries between far vertices
+// of a separator fall below the smallest float. Those supernodes stay in
+// double precision, and the heat keeps its relative accuracy down to values
+// far below the float range.
+BOOST_AUTO_TEST_CASE(supernodes_beyond_the_float_range_stay_double) {
+  const Both_precisions f(60, 50, 1.0, 0.02);
+  BOOST_TEST(f.single.entry_bytes() > 4 * f.single.number_of_entries());  // some in double
+  BOOST_TEST(f.single.entry_bytes() < 6 * f.single.number_of_entries());  // most in floats
+  const std::vector<Rhs_entry> b{{25 * 60 + 30, 0, 1.0}};
+  const std::vector<double> x = f.solve_all(f.exact, b, 1), y = f.solve_all(f.single, b, 1);
+  double worst = 0, smallest = 1;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (!(x[i] > 1e-280)) continue;
+    worst = std::max(worst, std::abs(y[i] - x[i]) / x[i]);
+    smallest = std::min(smallest, x[i]);
+  }
+  BOOST_TEST_MESSAGE("heat down to " << smallest << ": largest relative change " << worst);
+  BOOST_TEST(smallest < 1e-60);
+  BOOST_TEST(worst < 1e-6);
 }
 
 // A signed right-hand side (the Poisson step's, the star gradient's) can

@@ -129,12 +129,12 @@ class Localized_cholesky_solver {
       Factor_precision precision = Factor_precision::double_precision)
       : m_factor(make_supernodal_factor(factor, precision)) {
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
-    with_entries([this](const auto* entries) {
-      for (const auto& sn : m_factor.supernode)
+    for (const auto& sn : m_factor.supernode)
+      with_entries(sn, [this, &sn](const auto* entries) {
         for (int c = 0; c < sn.ncol; ++c)
           m_inverse_diagonal[sn.first_column + c] =
               1.0 / static_cast<double>(entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
-    });
+      });
     compute_tree_height();
     compute_children();
   }
@@ -595,13 +595,13 @@ class Localized_cholesky_solver {
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
       if (pruning.enabled) {
         stats.factor_entries +=
-            with_entries([&](const auto* entries) {
+            with_entries(sn, [&](const auto* entries) {
               return forward_supernode_pruned<W>(entries, sn, first, ys, y, pruning.drop_below,
                                                  ws.m_kept);
             });
         continue;
       }
-      with_entries([&](const auto* entries) { forward_supernode<W>(entries, sn, first, ys, y); });
+      with_entries(sn, [&](const auto* entries) { forward_supernode<W>(entries, sn, first, ys, y); });
       stats.factor_entries += entries_of(sn, first);
     }
     return stats;
@@ -657,12 +657,12 @@ class Localized_cholesky_solver {
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
       if (ws.m_largest_drop_below > 0) {
         stats.factor_entries +=
-            with_entries([&](const auto* entries) {
+            with_entries(sn, [&](const auto* entries) {
               return backward_supernode_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below,
                                                   ws.m_kept);
             });
       } else {
-        with_entries([&](const auto* entries) { backward_supernode<1>(entries, sn, 0, ys, y); });
+        with_entries(sn, [&](const auto* entries) { backward_supernode<1>(entries, sn, 0, ys, y); });
         stats.factor_entries += entries_of(sn, 0);
       }
       ws.m_backward_stamp[k] = s;
@@ -715,13 +715,13 @@ class Localized_cholesky_solver {
       const int first = ws.m_backward_entry[*it];
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
       if (pruning.enabled) {
-        stats.factor_entries += with_entries([&](const auto* entries) {
+        stats.factor_entries += with_entries(sn, [&](const auto* entries) {
           return backward_supernode_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
                                               pruning.drop_below, ws.m_kept);
         });
         continue;
       }
-      with_entries([&](const auto* entries) {
+      with_entries(sn, [&](const auto* entries) {
         backward_supernode<W>(entries, sn, first, row_of(sn.first_column), y);
       });
       stats.factor_entries += entries_of(sn, first);
@@ -778,7 +778,7 @@ class Localized_cholesky_solver {
     auto solve_columns = [&](int k, int first, int end) {
       const auto& sn = F.supernode[k];
       stats.backward_nodes += static_cast<std::size_t>(end - first);
-      with_entries([&](const auto* entries) {
+      with_entries(sn, [&](const auto* entries) {
         backward_supernode<W>(entries, sn, first,
                               y + static_cast<std::size_t>(sn.first_column) * W, y, end);
       });
@@ -799,11 +799,13 @@ class Localized_cholesky_solver {
     return stats;
   }
 
-  // Calls f with the factor's entries in the precision they are kept in
-  // (one branch per supernode; the kernels are compiled for both).
+  // Calls f with the entries array of supernode `sn`, in the precision its
+  // entries are kept in (one branch per supernode; the kernels are compiled
+  // for both).
   template <class F>
-  auto with_entries(F&& f) const -> decltype(f(std::declval<const double*>())) {
-    if (m_factor.is_single_precision()) return f(m_factor.single_value.data());
+  auto with_entries(const Supernodal_factor::Supernode& sn, F&& f) const
+      -> decltype(f(std::declval<const double*>())) {
+    if (sn.single) return f(m_factor.single_value.data());
     return f(m_factor.value.data());
   }
 

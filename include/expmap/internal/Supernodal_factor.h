@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
@@ -35,15 +36,18 @@ namespace internal {
 /// LL^T), so every solver model gets the same kernel.
 ///
 /// The entries are kept in double precision or, to halve the memory a
-/// solve streams, rounded to single precision (`Factor_precision`); the
-/// solves accumulate in double either way.
+/// solve streams, rounded to single precision (`Factor_precision`) in every
+/// supernode whose nonzero entries a float holds to its full 24 bits (none
+/// below the smallest normal float); the others stay in double precision.
+/// The solves accumulate in double either way.
 struct Supernodal_factor {
   struct Supernode {
     int first_column = 0;     // columns first_column .. first_column + ncol - 1
     int ncol = 0;
     int nbelow = 0;           // rows below the diagonal block
-    std::size_t diagonal = 0; // offset of the diagonal block in `value`
-    std::size_t below = 0;    // offset of the below block in `value`
+    std::size_t diagonal = 0; // offset of the diagonal block in its entries' array
+    std::size_t below = 0;    // offset of the below block in its entries' array
+    bool single = false;      // its entries in `single_value`, else in `value`
     std::size_t below_rows = 0;  // offset of the below rows in `row_index`
     int parent = -1;          // parent supernode, -1 for a root
   };
@@ -53,15 +57,14 @@ struct Supernodal_factor {
   std::vector<int> supernode_of_column;
   // The arrays a solve reads in scattered pieces (see Huge_page_allocator).
   std::vector<int, Huge_page_allocator<int>> row_index;
-  // The entries, in one of the two precisions (the other array is empty).
+  // The entries, of each supernode in one of the two arrays.
   std::vector<double, Huge_page_allocator<double>> value;
   std::vector<float, Huge_page_allocator<float>> single_value;
   std::vector<int> permutation;          // pivot -> row of A
   std::vector<int> inverse_permutation;  // row of A -> pivot
-  Factor_precision precision = Factor_precision::double_precision;
+  Factor_precision precision = Factor_precision::double_precision;  // as asked for
 
   std::size_t number_of_entries() const { return value.size() + single_value.size(); }
-  bool is_single_precision() const { return precision == Factor_precision::single_precision; }
   /// Bytes held by the entries.
   std::size_t value_bytes() const {
     return value.size() * sizeof(double) + single_value.size() * sizeof(float);
@@ -109,44 +112,62 @@ inline Supernodal_factor make_supernodal_factor(
   // growing `value` by doubling would hold up to three times the factor
   // (old and new buffer) at once, the peak of the whole precomputation on
   // large meshes.
+  // A supernode goes to floats if a float holds every nonzero entry of its
+  // columns to 24 bits: a heat system's factor decays exponentially away
+  // from the diagonal, and its top separators reach below the float range.
+  auto fits_a_float = [&](int begin, int end) {
+    constexpr double smallest = std::numeric_limits<float>::min();
+    for (int col = begin; col < end; ++col) {
+      const double d = diagonal_of(col);
+      const double scale = view.unit_diagonal ? d : 1.0;
+      if (d < smallest || d > std::numeric_limits<float>::max()) return false;
+      for (int q = first[col]; q < view.column_start[col + 1]; ++q) {
+        const double v = std::abs(view.value[q] * scale);
+        if (v != 0 && (v < smallest || v > std::numeric_limits<float>::max())) return false;
+      }
+    }
+    return true;
+  };
   std::vector<int> supernode_end;
-  std::size_t values = 0, rows_below = 0;
+  std::vector<char> supernode_single;
+  std::size_t doubles = 0, singles = 0, rows_below = 0;
   for (int j = 0; j < n;) {
     int end = j + 1;
     while (end < n && parent[end - 1] == end && count[end - 1] == count[end] + 1) ++end;
     const std::size_t ncol = static_cast<std::size_t>(end - j), nbelow = count[end - 1];
-    values += Supernodal_factor::triangle_row(end - j) + nbelow * ncol;
+    const bool single = precision == Factor_precision::single_precision && fits_a_float(j, end);
+    (single ? singles : doubles) += Supernodal_factor::triangle_row(end - j) + nbelow * ncol;
     rows_below += nbelow;
     supernode_end.push_back(end);
+    supernode_single.push_back(single ? 1 : 0);
     j = end;
   }
   f.precision = precision;
-  const bool single = precision == Factor_precision::single_precision;
-  if (single)
-    f.single_value.assign(values, 0.0f);
-  else
-    f.value.assign(values, 0.0);
-  auto store = [&f, single](std::size_t offset, double v) {
-    if (single)
-      f.single_value[offset] = static_cast<float>(v);
-    else
-      f.value[offset] = v;
-  };
+  f.value.assign(doubles, 0.0);
+  f.single_value.assign(singles, 0.0f);
   f.row_index.reserve(rows_below);
   f.supernode.reserve(supernode_end.size());
 
   f.supernode_of_column.assign(static_cast<std::size_t>(n), -1);
-  std::size_t next_value = 0;
+  std::size_t next_double = 0, next_single = 0;
   for (int j = 0, k = 0; j < n; ++k) {
     const int end = supernode_end[static_cast<std::size_t>(k)];
     Supernodal_factor::Supernode s;
     s.first_column = j;
     s.ncol = end - j;
     s.nbelow = count[end - 1];
+    s.single = supernode_single[static_cast<std::size_t>(k)] != 0;
+    std::size_t& next_value = s.single ? next_single : next_double;
     s.diagonal = next_value;
     s.below = s.diagonal + Supernodal_factor::triangle_row(s.ncol);
     s.below_rows = f.row_index.size();
     next_value = s.below + static_cast<std::size_t>(s.nbelow) * s.ncol;
+    auto store = [&f, &s](std::size_t offset, double v) {
+      if (s.single)
+        f.single_value[offset] = static_cast<float>(v);
+      else
+        f.value[offset] = v;
+    };
     // Rows below the run: the pattern of its last column.
     {
       const int last = end - 1;
