@@ -201,6 +201,14 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       field = parse_real(name, text);
       if (!(*field > 0)) throw Usage_error(name + " must be positive (got " + text + ")");
     };
+    // A word that must be one of two (given at most once).
+    auto one_of = [&](std::optional<std::string>& field, const char* first, const char* second) {
+      once(field.has_value());
+      field = take_value();
+      if (*field != first && *field != second)
+        throw Usage_error(name + " must be '" + first + "' or '" + second + "' (got '" + *field +
+                          "')");
+    };
 
     if (name == "-h" || name == "--help") {
       a.help = true;
@@ -228,23 +236,11 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
     } else if (name == "--distance-time-factor") {
       positive_real(a.distance_time_factor);
     } else if (name == "--laplacian") {
-      once(a.laplacian.has_value());
-      a.laplacian = take_value();
-      if (*a.laplacian != "direct" && *a.laplacian != "intrinsic-delaunay")
-        throw Usage_error("--laplacian must be 'direct' or 'intrinsic-delaunay' (got '" +
-                          *a.laplacian + "')");
+      one_of(a.laplacian, "direct", "intrinsic-delaunay");
     } else if (name == "--vertex-area") {
-      once(a.vertex_area.has_value());
-      a.vertex_area = take_value();
-      if (*a.vertex_area != "mixed-voronoi" && *a.vertex_area != "barycentric")
-        throw Usage_error("--vertex-area must be 'mixed-voronoi' or 'barycentric' (got '" +
-                          *a.vertex_area + "')");
+      one_of(a.vertex_area, "mixed-voronoi", "barycentric");
     } else if (name == "--factor-precision") {
-      once(a.factor_precision.has_value());
-      a.factor_precision = take_value();
-      if (*a.factor_precision != "double" && *a.factor_precision != "single")
-        throw Usage_error("--factor-precision must be 'double' or 'single' (got '" +
-                          *a.factor_precision + "')");
+      one_of(a.factor_precision, "double", "single");
     } else if (name == "--angles") {
       once(a.angles.has_value());
       try {

@@ -412,8 +412,7 @@ class Heat_exponential_map
   // info); the user sees one Computation_error naming the system.
   static internal::Localized_cholesky_solver factor_locally(
       const internal::Sparse_matrix& A, const char* system,
-      const internal::Localized_cholesky_solver* like = nullptr,
-      Factor_precision precision = Factor_precision::double_precision) {
+      const internal::Localized_cholesky_solver* like, Factor_precision precision) {
     Solver solver;
     try {
       if (like)

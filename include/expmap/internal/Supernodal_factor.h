@@ -108,10 +108,6 @@ inline Supernodal_factor make_supernodal_factor(
     return std::sqrt(view.diagonal[j]);
   };
 
-  // The supernodes' column ranges and the exact sizes of the arrays first:
-  // growing `value` by doubling would hold up to three times the factor
-  // (old and new buffer) at once, the peak of the whole precomputation on
-  // large meshes.
   // A supernode goes to floats if a float holds every nonzero entry of its
   // columns to 24 bits: a heat system's factor decays exponentially away
   // from the diagonal, and its top separators reach below the float range.
@@ -128,6 +124,11 @@ inline Supernodal_factor make_supernodal_factor(
     }
     return true;
   };
+
+  // The supernodes' column ranges and the exact sizes of the arrays first:
+  // growing `value` by doubling would hold up to three times the factor
+  // (old and new buffer) at once, the peak of the whole precomputation on
+  // large meshes.
   std::vector<int> supernode_end;
   std::vector<char> supernode_single;
   std::size_t doubles = 0, singles = 0, rows_below = 0;
