@@ -686,8 +686,15 @@ class Heat_exponential_map
         internal::norm(internal::operator-(m_indexed.arrays.point[v], m_indexed.arrays.point[s]));
     return w * r + (1 - w) * edge;
   }
-  // Smallest distance on the region's boundary (infinity if it has none).
-  double boundary_distance(const Workspace& ws) const;
+  // How far from the source the region ends (both infinity if it has no
+  // boundary): `vertex`, the smallest distance at a region vertex with a
+  // neighbour outside the region; `edge`, the smallest distance to the
+  // middle of an edge leaving the region (such a vertex's distance plus
+  // half its shortest edge out), where its vertices' cells end.
+  struct Region_end {
+    double vertex, edge;
+  };
+  Region_end region_end(const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
   std::vector<std::size_t> select_patch(const Patch& patch, std::size_t target,
                                         const std::vector<int>& wanted,
@@ -1161,7 +1168,11 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
         patch.kind() == Patch::Kind::vertex_set ? order.size() == wanted.size() + 1
         : patch.kind() == Patch::Kind::geodesic_radius ? true
                                                         : order.size() == target;
-    if (whole_component || (complete && reach * margin <= boundary_distance(*ws))) {
+    // The margin is measured to where the region ends, the middle of the
+    // edges that leave it; the patch itself must lie inside its last
+    // vertices (a radius patch then holds every vertex within its radius).
+    const Region_end end = region_end(*ws);
+    if (whole_component || (complete && reach < end.vertex && reach * margin <= end.edge)) {
       ws->patch.clear();
       for (std::size_t i : order) ws->patch.push_back(ws->region[i]);
       result.statistics += solve_star_heat(star, *ws);
@@ -1237,16 +1248,24 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat_at_least(
 }
 
 template <class TM, class VPM, class S>
-double Heat_exponential_map<TM, VPM, S>::boundary_distance(const Workspace& ws) const {
-  double boundary = std::numeric_limits<double>::infinity();
+typename Heat_exponential_map<TM, VPM, S>::Region_end Heat_exponential_map<TM, VPM, S>::region_end(
+    const Workspace& ws) const {
+  const auto& m = m_indexed.arrays;
+  Region_end end{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (const int v : ws.region_by_index) {
-    for (int p = m_indexed.arrays.neighbor_start[v]; p < m_indexed.arrays.neighbor_start[v + 1]; ++p)
-      if (!ws.in_region.is_marked(m_indexed.arrays.neighbor[p])) {
-        boundary = std::min(boundary, ws.potential[static_cast<std::size_t>(ws.in_region.value(v))]);
-        break;
-      }
+    double shortest_out = std::numeric_limits<double>::infinity();
+    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
+      const int u = m.neighbor[p];
+      if (!ws.in_region.is_marked(u))
+        shortest_out =
+            std::min(shortest_out, internal::norm(internal::operator-(m.point[u], m.point[v])));
+    }
+    if (shortest_out == std::numeric_limits<double>::infinity()) continue;
+    const double d = ws.potential[static_cast<std::size_t>(ws.in_region.value(v))];
+    end.vertex = std::min(end.vertex, d);
+    end.edge = std::min(end.edge, d + 0.5 * shortest_out);
   }
-  return boundary;
+  return end;
 }
 
 template <class TM, class VPM, class S>

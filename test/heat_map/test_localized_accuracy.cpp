@@ -101,11 +101,6 @@ BOOST_AUTO_TEST_CASE(refined_elephant_cutoff_error_with_widened_candidates) {
   check_cutoff(heat, "refined_elephant", {44339, 21024, 9731});
 }
 
-// The patches of these sources come closer to their region's edge than the
-// margin at the first attempt (measured: 1% for 160 and 23227, 5% for 3984
-// and 10228), and the query retries on a region twice as large. A retry
-// grown only by the margin it missed (1.25x to 1.4x here) meets the margin
-// too, but fails this test: source 23227's error rose from 0.74% to 1.26%.
 // A radius patch finds its region largest first down to the heat a plane
 // carries to its region's radius (manual, section 2, step 3). On this mesh
 // the vertex density varies by an order of magnitude, so the region's size
@@ -137,11 +132,18 @@ BOOST_AUTO_TEST_CASE(refined_elephant_radius_patches_down_to_a_heat) {
   }
 }
 
+// The patches of these sources come closer to their region's edge than the
+// margin at the first attempt (measured: by 0.9% for 2 at 1%, by 0.3% for
+// 11480 at 5%; the edge taken at the middle of the edges leaving the
+// region, manual section 2, step 5), and the query retries on a region
+// twice as large. The retry is not what keeps a cut-off error below 1%:
+// over 150 random sources at 1% on this mesh 63 exceed it either way
+// (doc/performance.md, 2026-11-24).
 BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
-  check_cutoff(heat, "armadillo", {160, 23227}, {0.01});
-  check_cutoff(heat, "armadillo", {3984, 10228}, {0.05});
+  check_cutoff(heat, "armadillo", {2}, {0.01});
+  check_cutoff(heat, "armadillo", {11480}, {0.05});
 }
 
 // A grid ten times finer across than along: the breadth-first candidates
