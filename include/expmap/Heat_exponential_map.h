@@ -1253,6 +1253,10 @@ typename Heat_exponential_map<TM, VPM, S>::Region_end Heat_exponential_map<TM, V
   const auto& m = m_indexed.arrays;
   Region_end end{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (const int v : ws.region_by_index) {
+    // end.vertex <= end.edge: a vertex at least as far as end.edge lowers
+    // neither, and its neighbours need not be looked at.
+    const double d = ws.potential[static_cast<std::size_t>(ws.in_region.value(v))];
+    if (d >= end.edge) continue;
     double shortest_out = std::numeric_limits<double>::infinity();
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
       const int u = m.neighbor[p];
@@ -1261,7 +1265,6 @@ typename Heat_exponential_map<TM, VPM, S>::Region_end Heat_exponential_map<TM, V
             std::min(shortest_out, internal::norm(internal::operator-(m.point[u], m.point[v])));
     }
     if (shortest_out == std::numeric_limits<double>::infinity()) continue;
-    const double d = ws.potential[static_cast<std::size_t>(ws.in_region.value(v))];
     end.vertex = std::min(end.vertex, d);
     end.edge = std::min(end.edge, d + 0.5 * shortest_out);
   }
