@@ -44,6 +44,8 @@
 //                             floor_ms, solve_ms the time inside the localized
 //                             triangular solves (Solve_statistics::solve_seconds)
 //   queries, failures         successful and failed queries in the row
+//   retried                   heat only: queries that doubled their region at
+//                             least once (Solve_statistics::region_retries)
 // --stats (one row per mesh):
 //   mesh, vertices, faces
 //   precompute_s              construction of Heat_exponential_map (operators,
@@ -58,8 +60,8 @@
 // --detail (one row per timed query):
 //   mesh, method, fraction, source, patch_vertices, ms, and for heat and
 //   heat-full forward_nodes, backward_nodes, factor_entries (Solve_statistics)
-//   and stream_floor_ms, solve_ms. heat-full rows have fraction 1 and the size of the
-//   whole map.
+//   and stream_floor_ms, solve_ms, region_retries. heat-full rows have
+//   fraction 1 and the size of the whole map.
 
 #include "Bench_options.h"
 #include "Loop_subdivided_mesh.h"
@@ -135,6 +137,7 @@ struct Summary_row {
   double factor_entries = nan_value, floor_ms = nan_value, floor_ratio = nan_value;
   double solve_floor_ratio = nan_value;
   std::size_t queries = 0, failures = 0;
+  std::size_t retried = 0;  // heat: queries that doubled their region at least once
 };
 
 /// One row of the --stats CSV.
@@ -291,6 +294,7 @@ Summary_row summarize(const std::string& mesh, std::size_t n, const std::string&
     }
     ms.push_back(r->ms);
     sizes.push_back(static_cast<double>(r->patch_vertices));
+    if (r->statistics.region_retries > 0) ++row.retried;
     if (!std::isnan(r->floor_ms)) {
       entries.push_back(static_cast<double>(r->statistics.factor_entries));
       floors.push_back(r->floor_ms);
@@ -318,13 +322,13 @@ class Benchmark {
     open(m_csv, options.csv,
          "mesh,vertices,method,fraction,patch_vertices,median_ms,p90_ms,"
          "us_per_patch_vertex,median_factor_entries,median_stream_floor_ms,floor_ratio,"
-         "queries,failures,solve_floor_ratio");
+         "queries,failures,solve_floor_ratio,retried");
     open(m_stats, options.stats,
          "mesh,vertices,faces,precompute_s,peak_rss_mb,heat_tree_height,poisson_tree_height,"
          "factor_nonzeros,mesh_rss_mb,hwm_reset");
     open(m_detail, options.detail,
          "mesh,method,fraction,source,patch_vertices,ms,forward_nodes,backward_nodes,"
-         "factor_entries,stream_floor_ms,solve_ms");
+         "factor_entries,stream_floor_ms,solve_ms,region_retries");
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
     if (options.single_precision_factors)
       m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
@@ -532,7 +536,8 @@ class Benchmark {
               << fmt(r.patch_vertices, 12) << "," << fmt(r.median_ms) << "," << fmt(r.p90_ms)
               << "," << fmt(r.us_per_patch_vertex) << "," << fmt(r.factor_entries, 12) << ","
               << fmt(r.floor_ms) << "," << fmt(r.floor_ratio) << "," << r.queries << ","
-              << r.failures << "," << fmt(r.solve_floor_ratio) << "\n";
+              << r.failures << "," << fmt(r.solve_floor_ratio) << ","
+              << (r.method == "heat" ? std::to_string(r.retried) : std::string()) << "\n";
       m_csv << std::flush;
     }
     if (m_detail.is_open()) {
@@ -543,9 +548,10 @@ class Benchmark {
         if (heat)
           m_detail << q.statistics.forward_nodes << "," << q.statistics.backward_nodes << ","
                    << q.statistics.factor_entries << "," << fmt(q.floor_ms) << ","
-                   << fmt(1e3 * q.statistics.solve_seconds);
+                   << fmt(1e3 * q.statistics.solve_seconds) << ","
+                   << q.statistics.region_retries;
         else
-          m_detail << ",,,,";
+          m_detail << ",,,,,";
         m_detail << "\n";
       }
       m_detail << std::flush;
@@ -631,6 +637,20 @@ class Benchmark {
                  [](const Summary_row& heat, const std::string&, double) {
                    return heat.median_ms > 0 ? heat.p90_ms / heat.median_ms : nan_value;
                  });
+    if (has("heat")) {
+      // What makes the p90: a query that misses the safety margin pays for
+      // a second distance step on a region twice as large.
+      header("heat queries that doubled their region (of the sources timed):");
+      for (const auto& m : meshes) {
+        std::cout << pad(m, 18, true);
+        for (double f : fractions) {
+          const auto* a = find_row(m, "heat", f);
+          std::cout << pad(a ? std::to_string(a->retried) + "/" + std::to_string(a->queries) : "-",
+                           10);
+        }
+        std::cout << "\n";
+      }
+    }
     if (has("heat")) {
       heat_table("heat query time / stream floor (median over sources; whole query time, so an "
                  "upper bound on solve / floor):",

@@ -1135,6 +1135,7 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
   const bool largest_first = finds_region_largest_first(patch);
   for (double growth = m_options.region_growth;; growth *= 2) {
     const bool retry = growth > m_options.region_growth;
+    if (retry) ++result.statistics.region_retries;
     bool whole_component = false;
     if (largest_first) {
       // The region is the hottest vertices of the component: no candidates

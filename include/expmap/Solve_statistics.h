@@ -13,13 +13,18 @@ namespace expmap {
 /// \ingroup PkgExpmapRef
 /// Work done by localized triangular solves: nodes of the elimination tree
 /// visited by forward and back substitution and the factor entries streamed.
-/// A query's cost is proportional to `factor_entries`.
+/// A query's cost is proportional to `factor_entries`; a query that had to
+/// grow its region (`region_retries`) pays for every attempt.
 struct Solve_statistics {
   std::size_t forward_nodes = 0;   ///< columns of L visited by L y = b
   std::size_t backward_nodes = 0;  ///< columns of L visited by L^T x = y
   std::size_t factor_entries = 0;  ///< stored entries of L read, both passes
   /// Wall-clock time spent in the solves (not in the rest of the query).
   double solve_seconds = 0;
+  /// Times a heat query doubled its region because the patch came closer
+  /// than the safety margin to the region's edge (manual, section 2,
+  /// step 5); each retry repeats the distance step on the larger region.
+  std::size_t region_retries = 0;
 
   /// Adds the work of another solve (all fields).
   Solve_statistics& operator+=(const Solve_statistics& other) {
@@ -27,6 +32,7 @@ struct Solve_statistics {
     backward_nodes += other.backward_nodes;
     factor_entries += other.factor_entries;
     solve_seconds += other.solve_seconds;
+    region_retries += other.region_retries;
     return *this;
   }
 };

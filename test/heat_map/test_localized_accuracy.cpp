@@ -139,11 +139,33 @@ BOOST_AUTO_TEST_CASE(refined_elephant_radius_patches_down_to_a_heat) {
 // twice as large. The retry is not what keeps a cut-off error below 1%:
 // of 150 random sources at 1% on this mesh, 60 exceed it when 45 of them
 // retry and 63 when one does (doc/performance.md, 2026-11-24).
+// A retry continues the first attempt's heat solve, so its map is the one a
+// first attempt on the doubled region computes (`region_growth` 4, whose
+// wider margin, 1.7 radii, source 2's doubled region holds too).
 BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "armadillo", {2}, {0.01});
   check_cutoff(heat, "armadillo", {11480}, {0.05});
+  BOOST_TEST(heat.compute_by_index(2, expmap::Patch::fraction(0.01)).statistics.region_retries ==
+             1u);
+  BOOST_TEST(
+      heat.compute_by_index(11480, expmap::Patch::fraction(0.05)).statistics.region_retries == 1u);
+  expmap::Heat_options doubled;
+  doubled.region_growth = 4;
+  const expmap::Heat_exponential_map<Surface_mesh> wide(mesh, doubled);
+  const auto retried = heat.compute_by_index(2, expmap::Patch::fraction(0.01));
+  const auto direct = wide.compute_by_index(2, expmap::Patch::fraction(0.01));
+  BOOST_TEST(direct.statistics.region_retries == 0u);
+  BOOST_TEST_REQUIRE(retried.indices == direct.indices);
+  double largest = 0;
+  for (std::size_t i = 0; i < retried.size(); ++i)
+    largest = std::max({largest, std::abs(retried.distance[i] - direct.distance[i]),
+                        std::abs(retried.angle[i] - direct.angle[i])});
+  BOOST_TEST(largest < 1e-12, "largest difference " << largest);
+  // A source whose first region holds the margin does not retry.
+  BOOST_TEST(heat.compute_by_index(2000, expmap::Patch::fraction(0.05)).statistics.region_retries ==
+             0u);
 }
 
 // A grid ten times finer across than along: the breadth-first candidates
