@@ -39,6 +39,7 @@ struct Map_arrays {
   Index_array vertices;
   Real_array r, theta, uv;  // uv: n x 2, (r cos theta, r sin theta)
   Real_array normal, axis_u, axis_v;
+  expmap::Solve_statistics statistics;  // the heat query's work; zeros for the other methods
 
   explicit Map_arrays(const Map& map)
       : source(static_cast<std::int64_t>(map.source)),
@@ -48,7 +49,8 @@ struct Map_arrays {
         uv({static_cast<py::ssize_t>(map.size()), py::ssize_t(2)}),
         normal(vector3(map.normal)),
         axis_u(vector3(map.axis_u)),
-        axis_v(vector3(map.axis_v)) {
+        axis_v(vector3(map.axis_v)),
+        statistics(map.statistics) {
     std::copy(map.indices.begin(), map.indices.end(), vertices.mutable_data());
     double* p = uv.mutable_data();
     for (std::size_t i = 0; i < map.size(); ++i) {

@@ -365,6 +365,21 @@ PYBIND11_MODULE(_expmap, m) {
       .def_readonly("normal", &Map_arrays::normal, "Unit normal of the tangent plane.")
       .def_readonly("axis_u", &Map_arrays::axis_u, "Tangent axis of angle 0.")
       .def_readonly("axis_v", &Map_arrays::axis_v, "Tangent axis of angle pi/2.")
+      .def_property_readonly(
+          "statistics",
+          [](const Map_arrays& a) {
+            py::dict d;
+            d["forward_nodes"] = a.statistics.forward_nodes;
+            d["backward_nodes"] = a.statistics.backward_nodes;
+            d["factor_entries"] = a.statistics.factor_entries;
+            d["solve_seconds"] = a.statistics.solve_seconds;
+            d["region_retries"] = a.statistics.region_retries;
+            return d;
+          },
+          "The heat query's work (zeros for the other methods): elimination-tree nodes\n"
+          "visited by forward and back substitution, factor entries read, seconds in\n"
+          "the solves, and how often the region was doubled because the patch came\n"
+          "too close to its edge (region_retries).")
       .def("__len__", [](const Map_arrays& a) { return a.vertices.size(); })
       .def("__repr__", [](const Map_arrays& a) {
         return "<LocalMap source " + std::to_string(a.source) + ", " +

@@ -51,6 +51,23 @@ def test_local_map_arrays(heat):
     assert np.all(np.isfinite(local.theta)) and np.all(np.abs(local.theta) <= math.pi)
 
 
+def test_statistics_count_the_region_retries(elephant):
+    # Source 21's 1% patch comes too close to its first region's edge; the
+    # retry continues the first attempt, so its map is a first attempt on the
+    # doubled region (region_growth 4).
+    _, V, F = elephant
+    retried = expmap.HeatExponentialMap(V, F).compute(21, fraction=0.01)
+    direct = expmap.HeatExponentialMap(V, F, region_growth=4).compute(21, fraction=0.01)
+    assert retried.statistics["region_retries"] == 1
+    assert direct.statistics["region_retries"] == 0
+    assert retried.statistics["factor_entries"] > 0
+    np.testing.assert_array_equal(retried.vertices, direct.vertices)
+    np.testing.assert_allclose(retried.r, direct.r, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(retried.theta, direct.theta, rtol=0, atol=1e-12)
+    dem = expmap.DiscreteExponentialMap(V, F).compute(21, fraction=0.01)
+    assert all(value == 0 for value in dem.statistics.values())
+
+
 def test_patch_kinds(heat):
     assert len(heat.compute(3, vertex_set=[3, 4, 5, 6])) >= 1
     local = heat.compute(3, radius=0.02)
