@@ -287,7 +287,7 @@ void bind_heat(py::module_& m) {
         "factor_precision: a FactorPrecision or its name ('double_precision',\n"
         "    'single_precision'): how the factors are kept between queries; single\n"
         "    about halves their memory and is faster on large meshes, and moves the\n"
-        "    map by about 1e-7 of its radius.\n"
+        "    map by up to about 4e-7 of its radius.\n"
         "regularization: a PoissonRegularization or its name.\n"
         "region_growth: a query solves on a region this many times larger than the\n"
         "    patch (at least 1).\n"

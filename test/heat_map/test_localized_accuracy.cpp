@@ -147,8 +147,6 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "armadillo", {2}, {0.01});
   check_cutoff(heat, "armadillo", {11480}, {0.05});
-  BOOST_TEST(heat.compute_by_index(2, expmap::Patch::fraction(0.01)).statistics.region_retries ==
-             1u);
   BOOST_TEST(
       heat.compute_by_index(11480, expmap::Patch::fraction(0.05)).statistics.region_retries == 1u);
   expmap::Heat_options doubled;
@@ -156,6 +154,7 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   const expmap::Heat_exponential_map<Surface_mesh> wide(mesh, doubled);
   const auto retried = heat.compute_by_index(2, expmap::Patch::fraction(0.01));
   const auto direct = wide.compute_by_index(2, expmap::Patch::fraction(0.01));
+  BOOST_TEST(retried.statistics.region_retries == 1u);
   BOOST_TEST(direct.statistics.region_retries == 0u);
   BOOST_TEST_REQUIRE(retried.indices == direct.indices);
   double largest = 0;
