@@ -965,16 +965,24 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::integrate_distance(int s, Wor
         at[k] = ws.in_region.value(c[k]);
         u[k] = ws.region_heat[static_cast<std::size_t>(at[k])];
       }
-      const auto div = internal::normalized_gradient_divergence(f->shape, u);
+      const auto div = internal::normalized_gradient_divergence(f->divergence, u);
       for (int k = 0; k < 3; ++k) ws.divergence[static_cast<std::size_t>(at[k])] += div[k];
     }
   }
 
   // Step 3: integrate, L phi = div X; phi is a distance up to a constant.
-  ws.rhs.clear();
+  // Filled in place: a pushed temporary is stored in pieces and reloaded
+  // whole, a store-forwarding stall per entry.
+  ws.rhs.resize(kept);
+  std::size_t entries = 0;
   for (std::size_t i = 0; i < kept; ++i)
-    if (ws.divergence[i] != 0.0 && !m_is_pinned[ws.region[i]])
-      ws.rhs.push_back({ws.region[i], 0, ws.divergence[i]});
+    if (ws.divergence[i] != 0.0 && !m_is_pinned[ws.region[i]]) {
+      internal::Rhs_entry& e = ws.rhs[entries++];
+      e.row = ws.region[i];
+      e.column = 0;
+      e.value = ws.divergence[i];
+    }
+  ws.rhs.resize(entries);
   ws.potential.resize(kept);
   stats += m_poisson_local.solve(ws.rhs, 1, ws.region.data(), kept, ws.potential.data(), ws.poisson_solve);
   // The distance must be smallest at the source. Slightly negative values

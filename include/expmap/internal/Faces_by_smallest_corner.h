@@ -4,6 +4,7 @@
 #define EXPMAP_INTERNAL_FACES_BY_SMALLEST_CORNER_H
 
 #include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/Normalized_gradient_divergence.h>
 
 #include <algorithm>
 #include <array>
@@ -14,7 +15,8 @@ namespace expmap {
 namespace internal {
 
 /// The faces of a triangulation grouped under their smallest corner, with
-/// each face's corners and shape stored side by side.
+/// each face's corners and divergence stencil (step 2 of a query) stored
+/// side by side.
 ///
 /// A query that visits the faces of a set of vertices then finds every face
 /// exactly once (under one vertex, without marking faces already seen), and
@@ -25,7 +27,7 @@ class Faces_by_smallest_corner {
  public:
   struct Face {
     std::array<int, 3> corner;
-    Triangle_shape shape;
+    Divergence_stencil divergence;
   };
 
   Faces_by_smallest_corner() = default;
@@ -42,7 +44,7 @@ class Faces_by_smallest_corner {
     m_face.resize(tri.face.size());
     std::vector<int> cursor(m_start.begin(), m_start.end() - 1);
     for (std::size_t f = 0; f < tri.face.size(); ++f)
-      m_face[cursor[owner(f)]++] = Face{tri.face[f], shapes[f]};
+      m_face[cursor[owner(f)]++] = Face{tri.face[f], Divergence_stencil(shapes[f])};
   }
 
   /// The faces whose smallest corner is `v`.

@@ -12,27 +12,53 @@
 namespace expmap {
 namespace internal {
 
-/// Step 2 of the heat method (Crane et al. 2013) on one face: the unit
-/// vector field X = grad u / |grad u| of the piecewise linear heat u (eq. 6
-/// and 7 of the paper), and its integrated divergence at the three corners,
-/// div_a = 1/2 (cot c (X . e_ab) + cot b (X . e_ac)).
+/// Step 2 of the heat method (Crane et al. 2013) on one face, prepared once
+/// per face: the unit vector field X = grad u / |grad u| of the piecewise
+/// linear heat u (eq. 6 and 7 of the paper), and its integrated divergence at
+/// the three corners, div_a = 1/2 (cot c (X . e_ab) + cot b (X . e_ac)).
 ///
-/// Works in the face's own planar layout, so it needs only edge lengths and
-/// runs unchanged on intrinsic triangulations. The three contributions sum
-/// to zero, so a right-hand side assembled from whole faces always
-/// satisfies the compatibility condition of the Neumann Poisson problem.
-/// A face where u is constant contributes nothing.
-inline std::array<double, 3> normalized_gradient_divergence(const Triangle_shape& shape,
+/// Works in the face's own planar layout (corner 0 at the origin, corner 1
+/// at (x1, 0), corner 2 at (x2, y2)), so it needs only edge lengths and runs
+/// unchanged on intrinsic triangulations. Everything that depends on the
+/// face alone is folded into constants here: a query evaluates the map on
+/// every face of its region, and then only the heat's gradient, its length
+/// and three dot products remain.
+struct Divergence_stencil {
+  /// grad u, up to the positive factor 1 / (2 area):
+  /// (y2 (u1 - u0), u0 (x2 - x1) - u1 x2 + u2 x1).
+  double y2 = 0, x2_minus_x1 = 0, x2 = 0, x1 = 0;
+  /// div_a = X . corner_weight[a].
+  std::array<std::array<double, 2>, 3> corner_weight{};
+
+  Divergence_stencil() = default;
+  explicit Divergence_stencil(const Triangle_shape& shape)
+      : y2(shape.layout[2]),
+        x2_minus_x1(shape.layout[1] - shape.layout[0]),
+        x2(shape.layout[1]),
+        x1(shape.layout[0]) {
+    const std::array<std::array<double, 2>, 3> p{
+        {{{0.0, 0.0}}, {{shape.layout[0], 0.0}}, {{shape.layout[1], shape.layout[2]}}}};
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3, c = (a + 2) % 3;
+      for (int k = 0; k < 2; ++k)
+        corner_weight[a][k] = 0.5 * (shape.cotangent[c] * (p[b][k] - p[a][k]) +
+                                     shape.cotangent[b] * (p[c][k] - p[a][k]));
+    }
+  }
+
+  std::array<double, 2> unnormalized_gradient(const std::array<double, 3>& u) const {
+    return {{y2 * (u[1] - u[0]), u[0] * x2_minus_x1 - u[1] * x2 + u[2] * x1}};
+  }
+};
+
+/// The integrated divergence of X = grad u / |grad u| at the three corners
+/// of the face of `stencil`. The three contributions sum to zero (up to
+/// round-off), so a right-hand side assembled from whole faces satisfies the
+/// compatibility condition of the Neumann Poisson problem. A face where u is
+/// constant contributes nothing.
+inline std::array<double, 3> normalized_gradient_divergence(const Divergence_stencil& stencil,
                                                             std::array<double, 3> u) {
-  const double x1 = shape.layout[0], x2 = shape.layout[1], y2 = shape.layout[2];
-  const std::array<std::array<double, 2>, 3> p{{{{0.0, 0.0}}, {{x1, 0.0}}, {{x2, y2}}}};
-  // grad u = 1/(2A) sum_k u_k rot90(p_{k+2} - p_{k+1}) with the corners at
-  // (0, 0), (x1, 0), (x2, y2); the 1/(2A) factor cancels in the
-  // normalization.
-  auto unnormalized_gradient = [&](const std::array<double, 3>& v) {
-    return std::array<double, 2>{{y2 * (v[1] - v[0]), v[0] * (x2 - x1) - v[1] * x2 + v[2] * x1}};
-  };
-  std::array<double, 2> grad = unnormalized_gradient(u);
+  std::array<double, 2> grad = stencil.unnormalized_gradient(u);
   double square = grad[0] * grad[0] + grad[1] * grad[1];
   if (!std::isnormal(square)) {
     // Heat decays exponentially: the square of a far, tiny-valued face's
@@ -41,19 +67,15 @@ inline std::array<double, 3> normalized_gradient_divergence(const Triangle_shape
     const double largest = std::max({std::abs(u[0]), std::abs(u[1]), std::abs(u[2])});
     if (!(largest > 0) || !std::isfinite(largest)) return {{0, 0, 0}};
     for (double& value : u) value /= largest;
-    grad = unnormalized_gradient(u);
+    grad = stencil.unnormalized_gradient(u);
     square = grad[0] * grad[0] + grad[1] * grad[1];
     if (!(square > 0) || !std::isfinite(square)) return {{0, 0, 0}};
   }
   const double inverse_length = 1.0 / std::sqrt(square);
   const double gx = grad[0] * inverse_length, gy = grad[1] * inverse_length;
   std::array<double, 3> div;
-  for (int a = 0; a < 3; ++a) {
-    const int b = (a + 1) % 3, c = (a + 2) % 3;
-    const double x_ab = gx * (p[b][0] - p[a][0]) + gy * (p[b][1] - p[a][1]);
-    const double x_ac = gx * (p[c][0] - p[a][0]) + gy * (p[c][1] - p[a][1]);
-    div[a] = 0.5 * (shape.cotangent[c] * x_ab + shape.cotangent[b] * x_ac);
-  }
+  for (int a = 0; a < 3; ++a)
+    div[a] = gx * stencil.corner_weight[a][0] + gy * stencil.corner_weight[a][1];
   return div;
 }
 

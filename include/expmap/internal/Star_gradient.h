@@ -176,102 +176,102 @@ constexpr double leak_settled_turn = 1e-7;
 /// than this (rad) shows an iteration that swings or diverges.
 constexpr double leak_swinging_turn = 1e-2;
 
-namespace cubic_leak_detail {
-
-/// One vertex's fixed point in `remove_cubic_leak` (below).
-struct Iteration {
-  std::array<double, 2> fitted{};
-  std::array<double, 2> g{};
-  double a = 0, b = 0;  // the Hessian model's curvatures across and along g
-
-  Iteration() = default;
-  Iteration(const std::array<double, 2>& fitted_gradient, double r, double time)
-      : fitted(fitted_gradient),
-        g(fitted_gradient),
-        a(-(1 / std::sqrt(time) + 1 / (2 * r)) / r),
-        b(1 / (2 * r * r)) {}
-
-  /// Step number `index` (from 0); false once `result` holds the answer.
-  bool step(const Star_gradient& star, int index, std::array<double, 2>& result) {
-    // Q needs only n n^T = g g^T / |g|^2: one division per step, no square
-    // root (the steps form a chain of dependent operations, and a square
-    // root or a division costs as much as the rest of a step). Squares that
-    // are not normal numbers take the overflow-safe route.
-    const double square = g[0] * g[0] + g[1] * g[1];
-    double xx, xy, yy;  // the entries of n n^T
-    if (std::isnormal(square)) {
-      const double inverse = 1 / square;
-      xx = g[0] * g[0] * inverse;
-      xy = g[0] * g[1] * inverse;
-      yy = g[1] * g[1] * inverse;
-    } else {
-      const double length = std::hypot(g[0], g[1]);
-      if (!(length > 0) || !std::isfinite(length)) {
-        result = fitted;
-        return false;
-      }
-      const double nx = g[0] / length, ny = g[1] / length;
-      xx = nx * nx;
-      xy = nx * ny;
-      yy = ny * ny;
-    }
-    const double qxx = a + (b - a) * xx, qxy = (b - a) * xy, qyy = a + (b - a) * yy;
-    // Coefficients of x^3, x^2 y, x y^2, y^3.
-    constexpr double sixth = 1.0 / 6;
-    const double coefficient[4] = {
-        g[0] * g[0] * g[0] * sixth + 0.5 * g[0] * qxx,
-        g[0] * g[0] * g[1] * 0.5 + 0.5 * (2 * g[0] * qxy + g[1] * qxx),
-        g[0] * g[1] * g[1] * 0.5 + 0.5 * (g[0] * qyy + 2 * g[1] * qxy),
-        g[1] * g[1] * g[1] * sixth + 0.5 * g[1] * qyy};
-    double leak_x = 0, leak_y = 0;
-    for (int k = 0; k < 4; ++k) {
-      leak_x += coefficient[k] * star.cubic_leak[k][0];
-      leak_y += coefficient[k] * star.cubic_leak[k][1];
-    }
-    const std::array<double, 2> next{{fitted[0] - leak_x, fitted[1] - leak_y}};
-    // Only the direction is used: it has settled when a step turns it by
-    // less than leak_settled_turn.
-    const double turn = g[0] * next[1] - g[1] * next[0], along = g[0] * next[0] + g[1] * next[1];
-    g = next;
-    if (along > 0 && std::abs(turn) <= leak_settled_turn * along) {
-      result = g;
-      return false;
-    }
-    if (index + 1 == max_leak_steps) {
-      // Still swinging: the model's cubic terms are too large for this star
-      // and distance (coarse meshes, far vertices), and the last step is an
-      // arbitrary direction (measured: up to pi from the fixed point on
-      // dino). The fitted gradient, leak and all, is the better estimate.
-      const bool swinging = !(along > 0 && std::abs(turn) <= leak_swinging_turn * along);
-      result = swinging ? fitted : g;
-      return false;
-    }
-    return true;
-  }
-};
-
-}  // namespace cubic_leak_detail
-
 /// `remove_cubic_leak` (below) for many vertices of one star: `gradient[i]` (the
 /// fitted gradient of the heat from a vertex at distance `r[i]`, divided by
 /// that heat at s) is replaced by its result. Equal, bit for bit, to one
-/// call per vertex; the vertices' iterations are interleaved, a few at a
-/// time, because each alone is a chain of dependent operations that leaves
-/// most of the processor idle.
+/// call per vertex.
+///
+/// Each vertex's fixed point is a chain of dependent operations, so a few
+/// vertices (lanes) are iterated side by side, laid out as arrays that the
+/// compiler turns into packed arithmetic. Most vertices take every step
+/// (they settle to leak_swinging_turn, not to leak_settled_turn), so a lane
+/// that has settled simply stops being read; the rare gradient whose square
+/// is not a normal number takes the overflow-safe route on its own.
 inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* gradient,
                               const double* r, std::size_t count, double time) {
-  constexpr std::size_t lanes = 4;
+  constexpr std::size_t lanes = 8;
   for (std::size_t first = 0; first < count; first += lanes) {
     const std::size_t width = std::min(lanes, count - first);
-    std::array<cubic_leak_detail::Iteration, lanes> lane;
-    std::array<bool, lanes> running{};
-    for (std::size_t l = 0; l < width; ++l) {
-      lane[l] = cubic_leak_detail::Iteration(gradient[first + l], r[first + l], time);
-      running[l] = true;
+    // Per lane: the fitted gradient, the iterate g, and the Hessian model's
+    // curvatures across (a) and along (b) g. Lanes past `width` repeat the
+    // first and are never read.
+    double fitted_x[lanes], fitted_y[lanes], gx[lanes], gy[lanes], a[lanes], b[lanes];
+    bool running[lanes];
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const std::size_t i = first + (l < width ? l : 0);
+      fitted_x[l] = gx[l] = gradient[i][0];
+      fitted_y[l] = gy[l] = gradient[i][1];
+      a[l] = -(1 / std::sqrt(time) + 1 / (2 * r[i])) / r[i];
+      b[l] = 1 / (2 * r[i] * r[i]);
+      running[l] = l < width;
     }
-    for (int step = 0; step < max_leak_steps; ++step)
-      for (std::size_t l = 0; l < width; ++l)
-        if (running[l]) running[l] = lane[l].step(star, step, gradient[first + l]);
+    for (int step = 0; step < max_leak_steps; ++step) {
+      // Q needs only n n^T = g g^T / |g|^2: one division per step, no square
+      // root (a square root or a division costs as much as the rest of a
+      // step). Squares that are not normal numbers are redone below.
+      double square[lanes], xx[lanes], xy[lanes], yy[lanes];
+      for (std::size_t l = 0; l < lanes; ++l) {
+        square[l] = gx[l] * gx[l] + gy[l] * gy[l];
+        const double inverse = 1 / square[l];
+        xx[l] = gx[l] * gx[l] * inverse;
+        xy[l] = gx[l] * gy[l] * inverse;
+        yy[l] = gy[l] * gy[l] * inverse;
+      }
+      for (std::size_t l = 0; l < lanes; ++l) {
+        if (!running[l] || std::isnormal(square[l])) continue;
+        const double length = std::hypot(gx[l], gy[l]);
+        if (!(length > 0) || !std::isfinite(length)) {
+          gradient[first + l] = {{fitted_x[l], fitted_y[l]}};
+          running[l] = false;
+          continue;
+        }
+        const double nx = gx[l] / length, ny = gy[l] / length;
+        xx[l] = nx * nx;
+        xy[l] = nx * ny;
+        yy[l] = ny * ny;
+      }
+      double turn[lanes], along[lanes];
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const double qxx = a[l] + (b[l] - a[l]) * xx[l], qxy = (b[l] - a[l]) * xy[l],
+                     qyy = a[l] + (b[l] - a[l]) * yy[l];
+        const double x = gx[l], y = gy[l];
+        // Coefficients of x^3, x^2 y, x y^2, y^3.
+        constexpr double sixth = 1.0 / 6;
+        const double coefficient[4] = {x * x * x * sixth + 0.5 * x * qxx,
+                                       x * x * y * 0.5 + 0.5 * (2 * x * qxy + y * qxx),
+                                       x * y * y * 0.5 + 0.5 * (x * qyy + 2 * y * qxy),
+                                       y * y * y * sixth + 0.5 * y * qyy};
+        double leak_x = 0, leak_y = 0;
+        for (int k = 0; k < 4; ++k) {
+          leak_x += coefficient[k] * star.cubic_leak[k][0];
+          leak_y += coefficient[k] * star.cubic_leak[k][1];
+        }
+        const double next_x = fitted_x[l] - leak_x, next_y = fitted_y[l] - leak_y;
+        // Only the direction is used: it has settled when a step turns it
+        // by less than leak_settled_turn.
+        turn[l] = x * next_y - y * next_x;
+        along[l] = x * next_x + y * next_y;
+        gx[l] = next_x;
+        gy[l] = next_y;
+      }
+      for (std::size_t l = 0; l < lanes; ++l) {
+        if (!running[l]) continue;
+        if (along[l] > 0 && std::abs(turn[l]) <= leak_settled_turn * along[l]) {
+          gradient[first + l] = {{gx[l], gy[l]}};
+          running[l] = false;
+        } else if (step + 1 == max_leak_steps) {
+          // Still swinging: the model's cubic terms are too large for this
+          // star and distance (coarse meshes, far vertices), and the last
+          // step is an arbitrary direction (measured: up to pi from the
+          // fixed point on dino). The fitted gradient, leak and all, is the
+          // better estimate.
+          const bool swinging =
+              !(along[l] > 0 && std::abs(turn[l]) <= leak_swinging_turn * along[l]);
+          gradient[first + l] = swinging ? std::array<double, 2>{{fitted_x[l], fitted_y[l]}}
+                                         : std::array<double, 2>{{gx[l], gy[l]}};
+        }
+      }
+    }
   }
 }
 
