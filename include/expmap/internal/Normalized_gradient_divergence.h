@@ -20,9 +20,10 @@ namespace internal {
 /// Works in the face's own planar layout (corner 0 at the origin, corner 1
 /// at (x1, 0), corner 2 at (x2, y2)), so it needs only edge lengths and runs
 /// unchanged on intrinsic triangulations. Everything that depends on the
-/// face alone is folded into constants here: a query evaluates the map on
-/// every face of its region, and then only the heat's gradient, its length
-/// and three dot products remain.
+/// face alone is folded into constants here (ten numbers per face, three
+/// more than its `Triangle_shape`): a query evaluates the divergence on every
+/// face of its region, and then only the heat's gradient, its length and
+/// three dot products remain.
 struct Divergence_stencil {
   /// grad u, up to the positive factor 1 / (2 area):
   /// (y2 (u1 - u0), u0 (x2 - x1) - u1 x2 + u2 x1).
