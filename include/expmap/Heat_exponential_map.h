@@ -18,6 +18,7 @@
 #include <expmap/internal/Cotan_operators.h>
 #include <expmap/internal/Faces_by_smallest_corner.h>
 #include <expmap/internal/Intrinsic_delaunay.h>
+#include <expmap/internal/Kth_largest.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Radix_sort.h>
@@ -594,8 +595,9 @@ class Heat_exponential_map
   Solve_statistics integrate_distance(int s, Workspace& ws) const;
   // The `count` rows of `rows` (ascending) with the most heat from the
   // source, ties to the lower row, into `out` in ascending order. By the
-  // count-th largest heat value and one pass: a selection on the values
-  // themselves, not on rows compared through the heat array.
+  // count-th largest heat value (internal::kth_largest) and one pass: a
+  // selection on the values themselves, not on rows compared through the
+  // heat array.
   static void hottest_rows(const std::vector<std::size_t>& rows, std::size_t count,
                            std::vector<std::size_t>& out, Workspace& ws);
   // Solves the heat from the source and its neighbours for the patch
@@ -690,11 +692,14 @@ class Heat_exponential_map
   // boundary): `vertex`, the smallest distance at a region vertex with a
   // neighbour outside the region; `edge`, the smallest distance to the
   // middle of an edge leaving the region (such a vertex's distance plus
-  // half its shortest edge out), where its vertices' cells end.
+  // half its shortest edge out), where its vertices' cells end. Only
+  // vertices at most `horizon` from the source are looked at: one farther
+  // lies beyond any end the margin check compares with `horizon` (infinity
+  // if none is).
   struct Region_end {
     double vertex, edge;
   };
-  Region_end region_end(const Workspace& ws) const;
+  Region_end region_end(double horizon, const Workspace& ws) const;
   // Region positions of the patch vertices, nearest first.
   std::vector<std::size_t> select_patch(const Patch& patch, std::size_t target,
                                         const std::vector<int>& wanted,
@@ -836,16 +841,11 @@ void Heat_exponential_map<TM, VPM, S>::hottest_rows(const std::vector<std::size_
     return;
   }
   if (count == 0) return;
-  ws.heat_values.resize(rows.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) ws.heat_values[i] = ws.heat[rows[i]];
-  const auto nth = ws.heat_values.begin() + static_cast<std::ptrdiff_t>(count - 1);
-  std::nth_element(ws.heat_values.begin(), nth, ws.heat_values.end(), std::greater<double>());
-  const double threshold = *nth;
+  std::size_t hotter = 0;
+  const double threshold = internal::kth_largest(
+      rows.size(), count, [&](std::size_t i) { return ws.heat[rows[i]]; }, ws.heat_values, hotter);
   // Rows hotter than the threshold all belong; of those at it, the lowest.
-  std::size_t at_threshold =
-      count - static_cast<std::size_t>(std::count_if(ws.heat_values.begin(), nth, [&](double h) {
-        return h > threshold;
-      }));
+  std::size_t at_threshold = count - hotter;
   for (const std::size_t row : rows) {
     const double h = ws.heat[row];
     if (h > threshold || (h == threshold && at_threshold > 0 && at_threshold--)) out.push_back(row);
@@ -1180,7 +1180,9 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     // The margin is measured to where the region ends, the middle of the
     // edges that leave it; the patch itself must lie inside its last
     // vertices (a radius patch then holds every vertex within its radius).
-    const Region_end end = region_end(*ws);
+    // A boundary vertex farther than reach * margin (>= reach) passes both
+    // tests, so region_end need not look beyond it.
+    const Region_end end = region_end(reach * margin, *ws);
     if (whole_component || (complete && reach < end.vertex && reach * margin <= end.edge)) {
       ws->patch.clear();
       for (std::size_t i : order) ws->patch.push_back(ws->region[i]);
@@ -1258,14 +1260,14 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat_at_least(
 
 template <class TM, class VPM, class S>
 typename Heat_exponential_map<TM, VPM, S>::Region_end Heat_exponential_map<TM, VPM, S>::region_end(
-    const Workspace& ws) const {
+    double horizon, const Workspace& ws) const {
   const auto& m = m_indexed.arrays;
   Region_end end{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (const int v : ws.region_by_index) {
     // end.vertex <= end.edge: a vertex at least as far as end.edge lowers
     // neither, and its neighbours need not be looked at.
     const double d = ws.potential[static_cast<std::size_t>(ws.in_region.value(v))];
-    if (d >= end.edge) continue;
+    if (d >= end.edge || d > horizon) continue;
     double shortest_out = std::numeric_limits<double>::infinity();
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
       const int u = m.neighbor[p];
