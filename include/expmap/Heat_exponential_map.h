@@ -693,9 +693,10 @@ class Heat_exponential_map
   // neighbour outside the region; `edge`, the smallest distance to the
   // middle of an edge leaving the region (such a vertex's distance plus
   // half its shortest edge out), where its vertices' cells end. Only
-  // vertices at most `horizon` from the source are looked at: one farther
-  // lies beyond any end the margin check compares with `horizon` (infinity
-  // if none is).
+  // vertices at most `horizon` from the source are looked at (both ends are
+  // infinity if no boundary vertex is that near): the margin check passes
+  // its reach times the margin, and a boundary vertex beyond that passes
+  // both of its tests.
   struct Region_end {
     double vertex, edge;
   };
