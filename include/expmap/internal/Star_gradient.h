@@ -185,11 +185,13 @@ constexpr double leak_swinging_turn = 1e-2;
 /// vertices (lanes) are iterated side by side, laid out as arrays that the
 /// compiler turns into packed arithmetic. Most vertices take every step
 /// (they settle to leak_swinging_turn, not to leak_settled_turn), so a lane
-/// that has settled simply stops being read; the rare gradient whose square
-/// is not a normal number takes the overflow-safe route on its own.
+/// that has settled simply stops being read until its whole group has; the
+/// rare gradient whose square is not a normal number takes the
+/// overflow-safe route on its own.
 inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* gradient,
                               const double* r, std::size_t count, double time) {
   constexpr std::size_t lanes = 8;
+  const double inverse_sqrt_time = 1 / std::sqrt(time);
   for (std::size_t first = 0; first < count; first += lanes) {
     const std::size_t width = std::min(lanes, count - first);
     // Per lane: the fitted gradient, the iterate g, and the Hessian model's
@@ -201,11 +203,13 @@ inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* 
       const std::size_t i = first + (l < width ? l : 0);
       fitted_x[l] = gx[l] = gradient[i][0];
       fitted_y[l] = gy[l] = gradient[i][1];
-      a[l] = -(1 / std::sqrt(time) + 1 / (2 * r[i])) / r[i];
+      a[l] = -(inverse_sqrt_time + 1 / (2 * r[i])) / r[i];
       b[l] = 1 / (2 * r[i] * r[i]);
       running[l] = l < width;
     }
-    for (int step = 0; step < max_leak_steps; ++step) {
+    for (int step = 0; step < max_leak_steps && std::any_of(running, running + lanes,
+                                                            [](bool on) { return on; });
+         ++step) {
       // Q needs only n n^T = g g^T / |g|^2: one division per step, no square
       // root (a square root or a division costs as much as the rest of a
       // step). Squares that are not normal numbers are redone below.
