@@ -46,6 +46,9 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --factor-precision P     double | single: Heat_options::factor_precision
                            (default: double, the library's; the stream
                            floor counts every factor entry as a double)
+  --poisson-compression T  Heat_options::poisson_compression_tolerance
+                           (default: the library's; 0 keeps the Poisson
+                           factor dense)
   --csv OUT                one row per mesh, method and fraction
   --stats CSV2             one row per mesh: precompute time, peak memory,
                            factor sizes
@@ -72,6 +75,7 @@ struct Bench_options {
   std::size_t repeats = 3;
   double time_factor = 0;  // 0: the library's default
   bool single_precision_factors = false;
+  double poisson_compression = -1;  // negative: the library's default
   std::string csv, stats, detail;
   bool help = false;
 };
@@ -158,6 +162,10 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
       if (value != "double" && value != "single")
         throw Usage_error("--factor-precision must be 'double' or 'single' (got '" + value + "')");
       o.single_precision_factors = value == "single";
+    } else if (arg == "--poisson-compression") {
+      o.poisson_compression = parse_double(arg, value);
+      if (!(o.poisson_compression >= 0 && o.poisson_compression <= 1e-10))
+        throw Usage_error("--poisson-compression must be in [0, 1e-10]");
     } else if (arg == "--csv") {
       o.csv = value;
     } else if (arg == "--stats") {

@@ -332,6 +332,8 @@ class Benchmark {
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
     if (options.single_precision_factors)
       m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
+    if (options.poisson_compression >= 0)
+      m_heat_options.poisson_compression_tolerance = options.poisson_compression;
   }
 
   void run(const std::vector<Mesh_job>& jobs) {
@@ -383,7 +385,8 @@ class Benchmark {
                 << " MiB before precompute" << (st.hwm_reset ? "" : "; VmHWM NOT reset")
                 << "), tree heights heat " << st.heat_tree_height << " / Poisson "
                 << st.poisson_tree_height << ", factor entries " << heat->factor_nonzeros()
-                << ", t = " << fmt(heat->time_step(), 4) << "\n";
+                << ", Poisson supernodes in low-rank form "
+                << heat->poisson_compressed_supernodes() << ", t = " << fmt(heat->time_step(), 4) << "\n";
     }
     m_mesh_statistics.push_back(st);
     if (m_stats.is_open()) {

@@ -244,7 +244,8 @@ void bind_heat(py::module_& m) {
                     std::optional<double> distance_time_factor, py::handle laplacian,
                     py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double region_growth,
-                    double pruning_tolerance, py::handle angle_estimator, std::pair<double, double> near_source_blend) {
+                    double pruning_tolerance, double poisson_compression_tolerance,
+                    py::handle angle_estimator, std::pair<double, double> near_source_blend) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
           options.distance_time_factor = distance_time_factor;
@@ -256,6 +257,7 @@ void bind_heat(py::module_& m) {
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.region_growth = region_growth;
           options.pruning_tolerance = pruning_tolerance;
+          options.poisson_compression_tolerance = poisson_compression_tolerance;
           options.angle_estimator =
               enum_argument<expmap::Angle_estimator>(angle_estimator, "angle_estimator");
           options.near_source_blend = {near_source_blend.first, near_source_blend.second};
@@ -272,6 +274,7 @@ void bind_heat(py::module_& m) {
         py::arg("regularization") = defaults.regularization,
         py::arg("region_growth") = defaults.region_growth,
         py::arg("pruning_tolerance") = defaults.pruning_tolerance,
+        py::arg("poisson_compression_tolerance") = defaults.poisson_compression_tolerance,
         py::arg("angle_estimator") = defaults.angle_estimator,
         py::arg("near_source_blend") =
             std::make_pair(defaults.near_source_blend.begin, defaults.near_source_blend.end),
@@ -294,6 +297,9 @@ void bind_heat(py::module_& m) {
         "pruning_tolerance: heat solves of small patches of large meshes skip\n"
         "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
         "    never).\n"
+        "poisson_compression_tolerance: the rows below the Poisson factor's large\n"
+        "    separators kept as truncated SVDs to this relative tolerance (in\n"
+        "    [0, 1e-10]; 0: dense); fewer entries read per query on large meshes.\n"
         "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
         "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
         "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"

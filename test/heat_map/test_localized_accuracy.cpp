@@ -7,8 +7,11 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 #include <unordered_map>
+#include <utility>
 
 #include "test_support.h"
 
@@ -187,15 +190,10 @@ BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
   check_cutoff(heat, "sphere (10,242 vertices)", {0, 5000});
 }
 
-// Small count and radius patches of a large mesh prune their heat solves (Heat_options::
-// pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
-// radius in distance and 1e-10 rad in angle, and the solves must read fewer
-// factor entries. A torus of 230k vertices, large enough that the query
-// prunes, closed (pruning needs nonnegative cotan weights, which boundary
-// edges opposite obtuse angles break), its vertices moved at random by up
-// to 0.3 of the spacing (regular vertices give exactly tied distances,
-// which round-off may order either way).
-BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
+namespace {
+
+// A torus of 480 x 480 vertices moved at random by up to 0.3 of the spacing.
+void make_jittered_torus(Surface_mesh& mesh) {
   const int around = 480, along = 480;
   const double major = 3.0, minor = 1.0, step = 2 * M_PI / around;
   std::mt19937 rng(7);
@@ -213,12 +211,41 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
       torus.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       torus.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
-  Surface_mesh mesh;
   expmap::soup_to_mesh(torus, mesh);
+}
+
+// The largest change between two maps of the same patch, in distance
+// relative to the patch radius and in angle (rad).
+template <class Map>
+std::pair<double, double> largest_changes(const Map& a, const Map& b) {
+  const double radius = b.distance.back();
+  double distance_change = 0, angle_change = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    distance_change = std::max(distance_change, std::abs(a.distance[i] - b.distance[i]) / radius);
+    angle_change =
+        std::max(angle_change, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
+  }
+  return {distance_change, angle_change};
+}
+
+}  // namespace
+
+// Small count and radius patches of a large mesh prune their heat solves (Heat_options::
+// pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
+// radius in distance and 1e-10 rad in angle, and the solves must read fewer
+// factor entries. A torus of 230k vertices, large enough that the query
+// prunes, closed (pruning needs nonnegative cotan weights, which boundary
+// edges opposite obtuse angles break), its vertices moved at random by up
+// to 0.3 of the spacing (regular vertices give exactly tied distances,
+// which round-off may order either way).
+BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
+  Surface_mesh mesh;
+  make_jittered_torus(mesh);
+  const std::size_t vertex_count = num_vertices(mesh);
   expmap::Heat_options unpruned_options;
   unpruned_options.pruning_tolerance = 0;
   const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
-  for (const std::size_t source : {std::size_t{1000}, std::size_t{around * along / 2 + 77}})
+  for (const std::size_t source : {std::size_t{1000}, vertex_count / 2 + 77})
     for (const double fraction : {0.001, 0.004}) {
       // A count patch, and a radius patch of its radius (its region found
       // down to a heat, which also sets its pruning threshold).
@@ -229,13 +256,7 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
         const auto a = pruned.compute_by_index(source, patch);
         const auto b = unpruned.compute_by_index(source, patch);
         BOOST_TEST_REQUIRE(a.indices == b.indices);
-        const double radius = b.distance.back();
-        double distance_error = 0, angle_error = 0;
-        for (std::size_t i = 0; i < a.size(); ++i) {
-          distance_error = std::max(distance_error, std::abs(a.distance[i] - b.distance[i]) / radius);
-          angle_error =
-              std::max(angle_error, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
-        }
+        const auto [distance_error, angle_error] = largest_changes(a, b);
         BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%, "
                                      << (patch.kind() == expmap::Patch::Kind::fraction ? "count" : "radius")
                                      << " patch: pruned solves read "
@@ -275,13 +296,7 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
     const auto a = pruned.compute_by_index(source, expmap::Patch::fraction(0.004));
     const auto b = unpruned.compute_by_index(source, expmap::Patch::fraction(0.004));
     BOOST_TEST_REQUIRE(a.indices == b.indices);
-    double distance_error = 0, angle_error = 0;
-    for (std::size_t i = 0; i < a.size(); ++i) {
-      distance_error = std::max(distance_error,
-                                std::abs(a.distance[i] - b.distance[i]) / b.distance.back());
-      angle_error =
-          std::max(angle_error, std::abs(std::remainder(a.angle[i] - b.angle[i], 2 * M_PI)));
-    }
+    const auto [distance_error, angle_error] = largest_changes(a, b);
     BOOST_TEST_MESSAGE("tube, source " << source << ": " << a.statistics.factor_entries
                                        << " factor entries pruned and solved again, "
                                        << b.statistics.factor_entries << " unpruned; distance "
@@ -293,14 +308,48 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
   }
 }
 
-BOOST_AUTO_TEST_CASE(pruning_tolerance_out_of_range_is_rejected) {
+// The Poisson factor's rows below its large separators in low-rank form
+// (Heat_options::poisson_compression_tolerance, on by default): the torus's
+// factor has such blocks, and the maps must equal those of the dense factor
+// to 1e-10 of the radius in distance and 1e-10 rad in angle (measured:
+// about 1e-14), with fewer factor entries read.
+BOOST_AUTO_TEST_CASE(compressed_poisson_rows_change_nothing_but_the_work) {
+  Surface_mesh mesh;
+  make_jittered_torus(mesh);
+  expmap::Heat_options dense_options;
+  dense_options.poisson_compression_tolerance = 0;
+  const expmap::Heat_exponential_map<Surface_mesh> compressed(mesh), dense(mesh, dense_options);
+  BOOST_TEST_MESSAGE(compressed.poisson_compressed_supernodes()
+                     << " Poisson supernodes in low-rank form");
+  BOOST_TEST_REQUIRE(compressed.poisson_compressed_supernodes() > 0u);
+  BOOST_TEST(dense.poisson_compressed_supernodes() == 0u);
+  for (const std::size_t source : {std::size_t{1000}, std::size_t{num_vertices(mesh) / 2 + 77}})
+    for (const double fraction : {0.001, 0.02}) {
+      const auto a = compressed.compute_by_index(source, expmap::Patch::fraction(fraction));
+      const auto b = dense.compute_by_index(source, expmap::Patch::fraction(fraction));
+      BOOST_TEST_REQUIRE(a.indices == b.indices);
+      const auto [distance_change, angle_change] = largest_changes(a, b);
+      BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%: "
+                                   << a.statistics.factor_entries << " factor entries against "
+                                   << b.statistics.factor_entries << "; distance "
+                                   << distance_change << " of the radius, angle " << angle_change
+                                   << " rad");
+      BOOST_TEST(distance_change <= 1e-10);
+      BOOST_TEST(angle_change <= 1e-10);
+      BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(solve_tolerances_out_of_range_are_rejected) {
   Surface_mesh mesh;
   expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
   for (const double tolerance : {-1e-14, 1e-6, std::nan("")}) {
-    expmap::Heat_options options;
-    options.pruning_tolerance = tolerance;
-    BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
-                      expmap::Invalid_input);
+    expmap::Heat_options pruning, compression;
+    pruning.pruning_tolerance = tolerance;
+    compression.poisson_compression_tolerance = tolerance;
+    for (const auto& options : {pruning, compression})
+      BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
+                        expmap::Invalid_input);
   }
 }
 

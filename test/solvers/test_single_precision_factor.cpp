@@ -3,6 +3,7 @@
 #include <expmap/Cholmod_solver.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 
+#include "Largest_rows.h"
 #include "Random_grid_operator.h"
 
 #include <boost/test/unit_test.hpp>
@@ -117,22 +118,8 @@ BOOST_AUTO_TEST_CASE(signed_solves_keep_their_accuracy_relative_to_the_solution)
 BOOST_AUTO_TEST_CASE(largest_first_and_pruned_solves_work_in_single_precision) {
   const Both_precisions f(90, 80, 1.0, 20.0);
   const std::vector<Rhs_entry> b{{40 * 90 + 45, 0, 1.0}};
-  auto largest = [&](const Localized_cholesky_solver& local, std::size_t count) {
-    std::vector<int> rows;
-    std::vector<double> values;
-    auto ws = local.make_workspace();
-    local.solve_largest(b, count, rows, values, *ws);
-    std::vector<std::size_t> order(rows.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
-      return values[p] > values[q] || (values[p] == values[q] && rows[p] < rows[q]);
-    });
-    std::vector<int> top;
-    for (std::size_t k = 0; k < count; ++k) top.push_back(rows[order[k]]);
-    std::sort(top.begin(), top.end());
-    return top;
-  };
-  BOOST_TEST(largest(f.single, 700) == largest(f.exact, 700));
+  BOOST_TEST(expmap_test::largest_rows(f.single, b, 700) ==
+             expmap_test::largest_rows(f.exact, b, 700));
 
   std::vector<int> rows(static_cast<std::size_t>(f.n));
   std::iota(rows.begin(), rows.end(), 0);

@@ -7,6 +7,7 @@
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Huge_page_allocator.h>
+#include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
 
 #include <algorithm>
@@ -121,13 +122,16 @@ class Localized_cholesky_solver {
   Localized_cholesky_solver() = default;
 
   /// Regroups the factor into supernodes for the traversals, its entries
-  /// kept in `precision` (the solves accumulate in double either way); the
-  /// factor's owner may be destroyed afterwards (the supernodal copy is
-  /// self-contained).
+  /// kept in `precision` (the solves accumulate in double either way), and
+  /// the rows below its large separators compressed as `compression` asks
+  /// (none by default; `compress_rows_below`); the factor's owner may be
+  /// destroyed afterwards (the supernodal copy is self-contained).
   explicit Localized_cholesky_solver(
       const Cholesky_factor_view& factor,
-      Factor_precision precision = Factor_precision::double_precision)
+      Factor_precision precision = Factor_precision::double_precision,
+      const Rows_below_compression& compression = {})
       : m_factor(make_supernodal_factor(factor, precision)) {
+    m_compressed_supernodes = compress_rows_below(m_factor, compression);
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
     for (const auto& sn : m_factor.supernode)
       with_entries(sn, [this, &sn](const auto* entries) {
@@ -161,6 +165,9 @@ class Localized_cholesky_solver {
 
   /// Number of supernodes (dense column blocks) of the factor.
   std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
+
+  /// Number of supernodes whose rows below are kept in low-rank form.
+  std::size_t number_of_compressed_supernodes() const { return m_compressed_supernodes; }
 
   /// A workspace sized for this factor.
   std::unique_ptr<Workspace> make_workspace() const {
@@ -862,9 +869,67 @@ class Localized_cholesky_solver {
     }
     const T* below = entries + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
+    if (sn.rank >= 0) {
+      const int run[2] = {first, sn.ncol};
+      return low_rank_forward<W>(below, sn, run, 2, ys, below_rows, y);
+    }
     for (int t = 0; t < sn.nbelow; ++t)
       subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
                       y + static_cast<std::size_t>(below_rows[t]) * W);
+  }
+
+  // Per-thread scratch of the low-rank kernels: the r x W products V^T ys
+  // and U^T y (r is at most a few hundred).
+  static double* low_rank_scratch(std::size_t size) {
+    thread_local std::vector<double> scratch;
+    scratch.assign(size, 0.0);
+    return scratch.data();
+  }
+
+  // The forward update of the rows below kept as U V^T (rank r): y[rows[t]]
+  // -= U[t] (V^T ys), the columns of V^T taken from the [begin, end) pairs
+  // of `runs` (the columns propagated).
+  template <int W, class T>
+  static void low_rank_forward(const T* below, const Supernodal_factor::Supernode& sn,
+                               const int* runs, std::size_t run_values, const double* ys,
+                               const int* below_rows, double* y) {
+    const int r = sn.rank;
+    const T* U = below;
+    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
+    double* z = low_rank_scratch(static_cast<std::size_t>(r) * W);
+    for (std::size_t q = 0; q < run_values; q += 2)
+      for (int c = runs[q]; c < runs[q + 1]; ++c) {
+        const T* v = V + static_cast<std::size_t>(c) * r;
+        const double* yc = ys + static_cast<std::size_t>(c) * W;
+        for (int j = 0; j < r; ++j)
+          for (int w = 0; w < W; ++w) z[j * W + w] += v[j] * yc[w];
+      }
+    for (int t = 0; t < sn.nbelow; ++t)
+      subtract_dot<W>(U + static_cast<std::size_t>(t) * r, z, 0, r,
+                      y + static_cast<std::size_t>(below_rows[t]) * W);
+  }
+
+  // The backward update from the rows below kept as U V^T: ys[c] -= V[c]
+  // (U^T x) for the columns c in [first, end), over the rows below
+  // `row(0)`, ..., `row(count - 1)` (the others taken as zero).
+  template <int W, class T, class Row>
+  static void low_rank_backward(const T* below, const Supernodal_factor::Supernode& sn,
+                                int first, int end, double* ys, const double* y,
+                                const int* below_rows, int count, Row row) {
+    const int r = sn.rank;
+    const T* U = below;
+    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
+    double* z = low_rank_scratch(static_cast<std::size_t>(r) * W);
+    for (int i = 0; i < count; ++i) {
+      const int t = row(i);
+      const T* u = U + static_cast<std::size_t>(t) * r;
+      const double* x = y + static_cast<std::size_t>(below_rows[t]) * W;
+      for (int j = 0; j < r; ++j)
+        for (int w = 0; w < W; ++w) z[j * W + w] += u[j] * x[w];
+    }
+    for (int c = first; c < end; ++c)
+      subtract_dot<W>(V + static_cast<std::size_t>(c) * r, z, 0, r,
+                      ys + static_cast<std::size_t>(c) * W);
   }
 
   // Back substitution through one supernode, for its columns from `first`
@@ -953,6 +1018,10 @@ class Localized_cholesky_solver {
     if (runs.empty()) return read;
     const T* below = entries + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
+    if (sn.rank >= 0) {
+      low_rank_forward<W>(below, sn, runs.data(), runs.size(), ys, below_rows, y);
+      return read + (kept + static_cast<std::size_t>(sn.nbelow)) * static_cast<std::size_t>(sn.rank);
+    }
     for (int t = 0; t < sn.nbelow; ++t) {
       const T* l = below + static_cast<std::size_t>(t) * sn.ncol;
       double* target = y + static_cast<std::size_t>(below_rows[t]) * W;
@@ -980,8 +1049,13 @@ class Localized_cholesky_solver {
     for (int t = 0; t < sn.nbelow; ++t)
       if (above<W>(y + static_cast<std::size_t>(below_rows[t]) * W, drop_below)) kept.push_back(t);
     const std::size_t width = static_cast<std::size_t>(sn.ncol - first);
-    std::size_t read = kept.size() * width;
-    if (static_cast<int>(kept.size()) == sn.nbelow) {
+    std::size_t read = sn.rank >= 0 ? (kept.size() + width) * static_cast<std::size_t>(sn.rank)
+                                    : kept.size() * width;
+    if (sn.rank >= 0) {
+      low_rank_backward<W>(entries + sn.below, sn, first, sn.ncol, ys, y, below_rows,
+                           static_cast<int>(kept.size()),
+                           [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
+    } else if (static_cast<int>(kept.size()) == sn.nbelow) {
       // Nothing to skip below: the register-blocked kernel of the full solve.
       backward_below<W>(entries, sn, first, ys, y, sn.ncol);
     } else {
@@ -1037,9 +1111,12 @@ class Localized_cholesky_solver {
   void backward_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
                       double* ys, const double* y, int end) const {
     constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
-    if (end - first > block) return backward_below_by_rows<W>(entries, sn, first, ys, y, end);
     const T* below = entries + sn.below;
     const int* below_rows = m_factor.row_index.data() + sn.below_rows;
+    if (sn.rank >= 0)
+      return low_rank_backward<W>(below, sn, first, end, ys, y, below_rows, sn.nbelow,
+                                  [](int i) { return i; });
+    if (end - first > block) return backward_below_by_rows<W>(entries, sn, first, ys, y, end);
     int c = first;
     for (; c + block <= end; c += block)
       subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
@@ -1117,13 +1194,16 @@ class Localized_cholesky_solver {
     }
   }
 
-  // Entries of the supernode's columns from `first` on (to `end`).
+  // Entries of the supernode's columns from `first` on (to `end`) that a
+  // solve reads: rows below in low-rank form are r per row and column.
   static std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first,
                                 int end = -1) {
     if (end < 0) end = sn.ncol;
     const std::size_t c = static_cast<std::size_t>(end - first);
-    const std::size_t rows_below_end = static_cast<std::size_t>(sn.ncol - end + sn.nbelow);
-    return c * (c + 1) / 2 + rows_below_end * c;
+    const std::size_t diagonal = c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
+    const std::size_t nbelow = static_cast<std::size_t>(sn.nbelow);
+    if (sn.rank >= 0) return diagonal + (nbelow + c) * static_cast<std::size_t>(sn.rank);
+    return diagonal + nbelow * c;
   }
 
   void compute_tree_height() {
@@ -1156,6 +1236,7 @@ class Localized_cholesky_solver {
   std::vector<double> m_inverse_diagonal;  // 1 / L(j, j)
   std::vector<int> m_child_start, m_child;
   int m_tree_height = 0;
+  std::size_t m_compressed_supernodes = 0;
 };
 
 }  // namespace internal

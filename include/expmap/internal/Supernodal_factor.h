@@ -50,6 +50,9 @@ struct Supernodal_factor {
     bool single = false;      // its entries in `single_value`, else in `value`
     std::size_t below_rows = 0;  // offset of the below rows in `row_index`
     int parent = -1;          // parent supernode, -1 for a root
+    // -1: the rows below are dense; else they are kept as U V^T of this
+    // rank in the block's place (compress_rows_below, Low_rank_rows_below.h).
+    int rank = -1;
   };
 
   int size = 0;

@@ -1,0 +1,105 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
+#define EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
+
+#include <expmap/internal/Parallel_loop.h>
+#include <expmap/internal/Supernodal_factor.h>
+
+#include <Eigen/Core>
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <cstddef>
+#include <stdexcept>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+
+/// Which supernodes' rows below are kept as a truncated singular value
+/// decomposition, and how closely.
+struct Rows_below_compression {
+  /// Singular values at or below this times the block's largest are
+  /// dropped; 0 compresses nothing.
+  double tolerance = 0;
+  /// Only blocks with at least this many columns and rows below: smaller
+  /// ones are a small share of any solve's reads.
+  int min_side = 128;
+  /// A block is compressed only if its two factors take at most this
+  /// fraction of its entries (else the dense block reads faster).
+  double max_fraction = 0.7;
+};
+
+/// Replaces the rows below of the large double-precision supernodes of `f`
+/// by U V^T, U (rows below x r) = the left singular vectors scaled by their
+/// singular values and V (columns x r) the right ones, r the singular values
+/// above `c.tolerance` times the largest.
+///
+/// Why: the rows below a separator couple it to the separators above it,
+/// far away on the mesh; that coupling is smooth and of low numerical rank
+/// (elephant_loop3's Poisson factor: ranks of 82-118 for blocks of 698-1,128
+/// rows at 1e-12, doc/paper_scale.md), while every solve through the
+/// separator reads the whole block. The two factors are stored in the
+/// block's own place (U's rows, then V's, row-major), so no memory is added;
+/// `Supernode::rank` tells the kernels which form a block is in.
+///
+/// The change to a solve is about the tolerance times the norms of the
+/// blocks on its path times its values there: at 1e-14, solutions of a
+/// Poisson system moved by about 1e-13 of their spread
+/// (test/solvers/test_low_rank_rows_below.cpp).
+///
+/// The decompositions run on `threads` threads (0: the hardware's count).
+/// \returns the number of supernodes compressed.
+/// \pre 0 <= c.tolerance < 1, 0 < c.max_fraction <= 1.
+inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_compression& c,
+                                       unsigned threads = 0) {
+  if (!(c.tolerance >= 0 && c.tolerance < 1) || !(c.max_fraction > 0 && c.max_fraction <= 1))
+    throw std::invalid_argument("compress_rows_below: tolerance must lie in [0, 1) and "
+                                "max_fraction in (0, 1]");
+  if (c.tolerance == 0) return 0;
+  std::vector<std::size_t> candidates;
+  for (std::size_t k = 0; k < f.supernode.size(); ++k) {
+    const auto& sn = f.supernode[k];
+    if (!sn.single && sn.rank < 0 && sn.ncol >= c.min_side && sn.nbelow >= c.min_side)
+      candidates.push_back(k);
+  }
+  // Largest first: the last ones to start are the quick ones.
+  std::sort(candidates.begin(), candidates.end(), [&f](std::size_t a, std::size_t b) {
+    const auto& x = f.supernode[a];
+    const auto& y = f.supernode[b];
+    return static_cast<double>(x.ncol) * x.nbelow > static_cast<double>(y.ncol) * y.nbelow;
+  });
+  std::vector<char> compressed(candidates.size(), 0);
+  parallel_loop(candidates.size(), batch_thread_count(threads, candidates.size()),
+                [&](std::size_t i) {
+    auto& sn = f.supernode[candidates[i]];
+    double* below = f.value.data() + sn.below;
+    using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const Matrix> block(below, sn.nbelow, sn.ncol);
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(block),
+                                             Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const auto& sigma = svd.singularValues();
+    if (sigma.size() == 0 || !(sigma[0] > 0)) return;
+    int r = 0;
+    while (r < sigma.size() && sigma[r] > c.tolerance * sigma[0]) ++r;
+    const double entries = static_cast<double>(sn.nbelow) * sn.ncol;
+    if (static_cast<double>(r) * (sn.nbelow + sn.ncol) > c.max_fraction * entries) return;
+    // The block has been copied into the decomposition: its place is free.
+    double* U = below;
+    double* V = below + static_cast<std::size_t>(sn.nbelow) * r;
+    for (int t = 0; t < sn.nbelow; ++t)
+      for (int j = 0; j < r; ++j)
+        U[static_cast<std::size_t>(t) * r + j] = svd.matrixU()(t, j) * sigma[j];
+    for (int q = 0; q < sn.ncol; ++q)
+      for (int j = 0; j < r; ++j) V[static_cast<std::size_t>(q) * r + j] = svd.matrixV()(q, j);
+    sn.rank = r;
+    compressed[i] = 1;
+  });
+  return static_cast<std::size_t>(std::count(compressed.begin(), compressed.end(), 1));
+}
+
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
