@@ -407,10 +407,11 @@ class Heat_exponential_map
       }
     }
     internal::make_identity_row(L, identity_rows);
+    m_poisson_local =
+        factor_locally(L, "Poisson", &m_heat_local, m_options.factor_precision);
     internal::Rows_below_compression compression;
     compression.tolerance = m_options.poisson_compression_tolerance;
-    m_poisson_local =
-        factor_locally(L, "Poisson", &m_heat_local, m_options.factor_precision, compression);
+    m_poisson_local.compress_rows_below(compression);
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the
@@ -438,8 +439,7 @@ class Heat_exponential_map
   // info); the user sees one Computation_error naming the system.
   static internal::Localized_cholesky_solver factor_locally(
       const internal::Sparse_matrix& A, const char* system,
-      const internal::Localized_cholesky_solver* like, Factor_precision precision,
-      const internal::Rows_below_compression& compression = {}) {
+      const internal::Localized_cholesky_solver* like, Factor_precision precision) {
     Solver solver;
     try {
       if (like)
@@ -453,7 +453,7 @@ class Heat_exponential_map
                               e.what() + "); nearly degenerate faces make it numerically "
                               "indefinite: repair the mesh (expmap --repair) or remesh it");
     }
-    return internal::Localized_cholesky_solver(solver.factor_view(), precision, compression);
+    return internal::Localized_cholesky_solver(solver.factor_view(), precision);
   }
 
   // Pruned source-heat solves rely on the distance-heat matrix being an

@@ -35,8 +35,8 @@ struct Dense_and_compressed {
     Rows_below_compression c;
     c.tolerance = tolerance;
     c.min_side = 64;
-    compressed = Localized_cholesky_solver(solver.factor_view(),
-                                           Factor_precision::double_precision, c);
+    compressed = Localized_cholesky_solver(solver.factor_view());
+    compressed.compress_rows_below(c);
     rows.resize(static_cast<std::size_t>(n));
     std::iota(rows.begin(), rows.end(), 0);
   }
@@ -156,15 +156,14 @@ BOOST_AUTO_TEST_CASE(compression_settings_are_checked) {
   for (const double tolerance : {-1.0, 1.0, std::nan("")}) {
     Rows_below_compression c;
     c.tolerance = tolerance;
-    BOOST_CHECK_THROW(Localized_cholesky_solver(solver.factor_view(),
-                                                Factor_precision::double_precision, c),
-                      std::invalid_argument);
+    Localized_cholesky_solver local(solver.factor_view());
+    BOOST_CHECK_THROW(local.compress_rows_below(c), std::invalid_argument);
   }
   // Single-precision supernodes are left as they are.
   Rows_below_compression c;
   c.tolerance = 1e-14;
   c.min_side = 1;
-  const Localized_cholesky_solver single(solver.factor_view(), Factor_precision::single_precision,
-                                         c);
+  Localized_cholesky_solver single(solver.factor_view(), Factor_precision::single_precision);
+  BOOST_TEST(single.compress_rows_below(c) == 0u);
   BOOST_TEST(single.number_of_compressed_supernodes() == 0u);
 }

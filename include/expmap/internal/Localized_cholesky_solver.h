@@ -122,16 +122,13 @@ class Localized_cholesky_solver {
   Localized_cholesky_solver() = default;
 
   /// Regroups the factor into supernodes for the traversals, its entries
-  /// kept in `precision` (the solves accumulate in double either way), and
-  /// the rows below its large separators compressed as `compression` asks
-  /// (none by default; `compress_rows_below`); the factor's owner may be
-  /// destroyed afterwards (the supernodal copy is self-contained).
+  /// kept in `precision` (the solves accumulate in double either way); the
+  /// factor's owner may be destroyed afterwards (the supernodal copy is
+  /// self-contained).
   explicit Localized_cholesky_solver(
       const Cholesky_factor_view& factor,
-      Factor_precision precision = Factor_precision::double_precision,
-      const Rows_below_compression& compression = {})
+      Factor_precision precision = Factor_precision::double_precision)
       : m_factor(make_supernodal_factor(factor, precision)) {
-    m_compressed_supernodes = compress_rows_below(m_factor, compression);
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
     for (const auto& sn : m_factor.supernode)
       with_entries(sn, [this, &sn](const auto* entries) {
@@ -165,6 +162,20 @@ class Localized_cholesky_solver {
 
   /// Number of supernodes (dense column blocks) of the factor.
   std::size_t number_of_supernodes() const { return m_factor.supernode.size(); }
+
+  /// Keeps the rows below the factor's large separators in low-rank form
+  /// as `compression` asks (`internal::compress_rows_below`), on `threads`
+  /// threads (0: the hardware's count). Part of the setup: not to be called
+  /// while the solver is in use. Done after the factor's owner is released,
+  /// the decompositions' scratch does not add to the precomputation's peak
+  /// memory.
+  /// \returns the number of supernodes compressed by this call.
+  std::size_t compress_rows_below(const Rows_below_compression& compression,
+                                  unsigned threads = 0) {
+    const std::size_t count = internal::compress_rows_below(m_factor, compression, threads);
+    m_compressed_supernodes += count;
+    return count;
+  }
 
   /// Number of supernodes whose rows below are kept in low-rank form.
   std::size_t number_of_compressed_supernodes() const { return m_compressed_supernodes; }
