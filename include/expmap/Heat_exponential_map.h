@@ -149,7 +149,12 @@ struct Heat_options {
   /// (doc/paper_scale.md); meshes below about 100k vertices have no such
   /// blocks. The heat factors stay dense: their pruned solves need every
   /// value accurate relative to itself, however small, which an absolute
-  /// truncation does not give. 0 keeps every block dense. At most 1e-10.
+  /// truncation does not give. With single-precision factors
+  /// (`factor_precision`) the Poisson blocks kept in floats are truncated at
+  /// 1e-7 instead, about their rounding: 0.82x / 0.94x the query time of
+  /// single precision alone at 0.1% / 1% patches of the 2.85M-vertex mesh,
+  /// the maps moved by at most 6.6e-8 of the radius. 0 keeps every block
+  /// dense. At most 1e-10.
   double poisson_compression_tolerance = 1e-14;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
@@ -411,6 +416,9 @@ class Heat_exponential_map
         factor_locally(L, "Poisson", &m_heat_local, m_options.factor_precision);
     internal::Rows_below_compression compression;
     compression.tolerance = m_options.poisson_compression_tolerance;
+    if (compression.tolerance > 0)
+      compression.single_tolerance =
+          std::max(compression.tolerance, single_precision_compression_tolerance);
     m_poisson_local.compress_rows_below(compression);
   }
 
@@ -487,6 +495,10 @@ class Heat_exponential_map
   const internal::Localized_cholesky_solver& distance_heat() const {
     return m_separate_distance_heat ? m_distance_heat_local : m_heat_local;
   }
+
+  // The truncation of a Poisson block kept in floats (`factor_precision`
+  // single): its entries are rounded to about 6e-8 of themselves already.
+  static constexpr double single_precision_compression_tolerance = 1e-7;
 
   // Candidates solved for heat per patch vertex wanted, beyond `region_growth`.
   static constexpr double candidate_excess = 1.3;

@@ -159,11 +159,51 @@ BOOST_AUTO_TEST_CASE(compression_settings_are_checked) {
     Localized_cholesky_solver local(solver.factor_view());
     BOOST_CHECK_THROW(local.compress_rows_below(c), std::invalid_argument);
   }
-  // Single-precision supernodes are left as they are.
+  // Single-precision supernodes are left as they are without a tolerance
+  // of their own.
   Rows_below_compression c;
   c.tolerance = 1e-14;
   c.min_side = 1;
   Localized_cholesky_solver single(solver.factor_view(), Factor_precision::single_precision);
   BOOST_TEST(single.compress_rows_below(c) == 0u);
   BOOST_TEST(single.number_of_compressed_supernodes() == 0u);
+  c.single_tolerance = 2.0;
+  BOOST_CHECK_THROW(single.compress_rows_below(c), std::invalid_argument);
+}
+
+// Blocks kept in floats, truncated near float precision: the solution stays
+// within float round-off of the double-precision dense one, as the dense
+// float factor's does (test_single_precision_factor.cpp), and fewer entries
+// are read.
+BOOST_AUTO_TEST_CASE(single_precision_blocks_compress_to_float_accuracy) {
+  const int nx = 260;
+  const auto A = expmap_test::random_grid_operator(nx, 260, 5, 0.01, 1.0);
+  expmap::Cholmod_solver solver;
+  solver.factor(A);
+  const Localized_cholesky_solver exact(solver.factor_view());
+  const Localized_cholesky_solver single(solver.factor_view(), Factor_precision::single_precision);
+  Localized_cholesky_solver compressed(solver.factor_view(), Factor_precision::single_precision);
+  Rows_below_compression c;
+  c.tolerance = 1e-14;
+  c.single_tolerance = 1e-7;
+  c.min_side = 64;
+  BOOST_TEST_REQUIRE(compressed.compress_rows_below(c) >= 4u);
+  std::vector<int> rows(A.rows());
+  std::iota(rows.begin(), rows.end(), 0);
+  const auto b = signed_rhs(nx, 2);
+  auto solve = [&](const Localized_cholesky_solver& local, expmap::Solve_statistics& stats) {
+    std::vector<double> out(2 * rows.size());
+    auto ws = local.make_workspace();
+    stats = local.solve(b, 2, rows.data(), rows.size(), out.data(), *ws);
+    return out;
+  };
+  expmap::Solve_statistics exact_stats, single_stats, compressed_stats;
+  const auto x = solve(exact, exact_stats), y = solve(single, single_stats),
+             z = solve(compressed, compressed_stats);
+  const double rounding = relative_change(x, y), truncation = relative_change(x, z);
+  BOOST_TEST_MESSAGE("change against double precision: floats " << rounding << ", floats "
+                     "compressed at 1e-7 " << truncation);
+  BOOST_TEST(truncation < 1e-6);
+  BOOST_TEST(truncation < 10 * rounding);
+  BOOST_TEST(compressed_stats.factor_entries < single_stats.factor_entries);
 }

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 namespace expmap {
@@ -21,8 +22,11 @@ namespace internal {
 /// decomposition, and how closely.
 struct Rows_below_compression {
   /// Singular values at or below this times the block's largest are
-  /// dropped; 0 compresses nothing.
+  /// dropped from double-precision blocks; 0 leaves them dense.
   double tolerance = 0;
+  /// The same for blocks kept in floats, whose entries are rounded to about
+  /// 6e-8 of themselves already; 0 leaves them dense.
+  double single_tolerance = 0;
   /// Only blocks with at least this many columns and rows below: smaller
   /// ones are a small share of any solve's reads.
   int min_side = 128;
@@ -31,10 +35,11 @@ struct Rows_below_compression {
   double max_fraction = 0.7;
 };
 
-/// Replaces the rows below of the large double-precision supernodes of `f`
-/// by U V^T, U (rows below x r) = the left singular vectors scaled by their
-/// singular values and V (columns x r) the right ones, r the singular values
-/// above `c.tolerance` times the largest.
+/// Replaces the rows below of the large supernodes of `f` by U V^T, U (rows
+/// below x r) = the left singular vectors scaled by their singular values
+/// and V (columns x r) the right ones, r the singular values above
+/// `c.tolerance` (`c.single_tolerance` for a block kept in floats) times the
+/// largest; U and V are kept in the block's precision.
 ///
 /// Why: the rows below a separator couple it to the separators above it,
 /// far away on the mesh; that coupling is smooth and of low numerical rank
@@ -54,14 +59,18 @@ struct Rows_below_compression {
 /// \pre 0 <= c.tolerance < 1, 0 < c.max_fraction <= 1.
 inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_compression& c,
                                        unsigned threads = 0) {
-  if (!(c.tolerance >= 0 && c.tolerance < 1) || !(c.max_fraction > 0 && c.max_fraction <= 1))
-    throw std::invalid_argument("compress_rows_below: tolerance must lie in [0, 1) and "
+  auto valid = [](double tolerance) { return tolerance >= 0 && tolerance < 1; };
+  if (!valid(c.tolerance) || !valid(c.single_tolerance) ||
+      !(c.max_fraction > 0 && c.max_fraction <= 1))
+    throw std::invalid_argument("compress_rows_below: tolerances must lie in [0, 1) and "
                                 "max_fraction in (0, 1]");
-  if (c.tolerance == 0) return 0;
+  auto tolerance_of = [&c](const Supernodal_factor::Supernode& sn) {
+    return sn.single ? c.single_tolerance : c.tolerance;
+  };
   std::vector<std::size_t> candidates;
   for (std::size_t k = 0; k < f.supernode.size(); ++k) {
     const auto& sn = f.supernode[k];
-    if (!sn.single && sn.rank < 0 && sn.ncol >= c.min_side && sn.nbelow >= c.min_side)
+    if (tolerance_of(sn) > 0 && sn.rank < 0 && sn.ncol >= c.min_side && sn.nbelow >= c.min_side)
       candidates.push_back(k);
   }
   // Largest first: the last ones to start are the quick ones.
@@ -70,31 +79,37 @@ inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_co
     const auto& y = f.supernode[b];
     return static_cast<double>(x.ncol) * x.nbelow > static_cast<double>(y.ncol) * y.nbelow;
   });
+  // One block, its entries of type T at `below`: true if it was compressed.
+  auto compress = [&c](Supernodal_factor::Supernode& sn, auto* below, double tolerance) {
+    using T = std::remove_pointer_t<decltype(below)>;
+    using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    const Eigen::Map<const Matrix> block(below, sn.nbelow, sn.ncol);
+    const Eigen::BDCSVD<Eigen::MatrixXd> svd(block.template cast<double>(),
+                                             Eigen::ComputeThinU | Eigen::ComputeThinV);
+    const auto& sigma = svd.singularValues();
+    if (sigma.size() == 0 || !(sigma[0] > 0)) return false;
+    int r = 0;
+    while (r < sigma.size() && sigma[r] > tolerance * sigma[0]) ++r;
+    const double entries = static_cast<double>(sn.nbelow) * sn.ncol;
+    if (static_cast<double>(r) * (sn.nbelow + sn.ncol) > c.max_fraction * entries) return false;
+    // The block has been copied into the decomposition: its place is free.
+    T* U = below;
+    T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
+    for (int t = 0; t < sn.nbelow; ++t)
+      for (int j = 0; j < r; ++j)
+        U[static_cast<std::size_t>(t) * r + j] = static_cast<T>(svd.matrixU()(t, j) * sigma[j]);
+    for (int q = 0; q < sn.ncol; ++q)
+      for (int j = 0; j < r; ++j)
+        V[static_cast<std::size_t>(q) * r + j] = static_cast<T>(svd.matrixV()(q, j));
+    sn.rank = r;
+    return true;
+  };
   std::vector<char> compressed(candidates.size(), 0);
   parallel_loop(candidates.size(), batch_thread_count(threads, candidates.size()),
                 [&](std::size_t i) {
     auto& sn = f.supernode[candidates[i]];
-    double* below = f.value.data() + sn.below;
-    using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    const Eigen::Map<const Matrix> block(below, sn.nbelow, sn.ncol);
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(Eigen::MatrixXd(block),
-                                             Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const auto& sigma = svd.singularValues();
-    if (sigma.size() == 0 || !(sigma[0] > 0)) return;
-    int r = 0;
-    while (r < sigma.size() && sigma[r] > c.tolerance * sigma[0]) ++r;
-    const double entries = static_cast<double>(sn.nbelow) * sn.ncol;
-    if (static_cast<double>(r) * (sn.nbelow + sn.ncol) > c.max_fraction * entries) return;
-    // The block has been copied into the decomposition: its place is free.
-    double* U = below;
-    double* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    for (int t = 0; t < sn.nbelow; ++t)
-      for (int j = 0; j < r; ++j)
-        U[static_cast<std::size_t>(t) * r + j] = svd.matrixU()(t, j) * sigma[j];
-    for (int q = 0; q < sn.ncol; ++q)
-      for (int j = 0; j < r; ++j) V[static_cast<std::size_t>(q) * r + j] = svd.matrixV()(q, j);
-    sn.rank = r;
-    compressed[i] = 1;
+    compressed[i] = sn.single ? compress(sn, f.single_value.data() + sn.below, c.single_tolerance)
+                              : compress(sn, f.value.data() + sn.below, c.tolerance);
   });
   return static_cast<std::size_t>(std::count(compressed.begin(), compressed.end(), 1));
 }
