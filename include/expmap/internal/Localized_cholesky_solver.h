@@ -166,9 +166,9 @@ class Localized_cholesky_solver {
   /// Keeps the rows below the factor's large separators in low-rank form
   /// as `compression` asks (`internal::compress_rows_below`), on `threads`
   /// threads (0: the hardware's count). Part of the setup: not to be called
-  /// while the solver is in use. Done after the factor's owner is released,
-  /// the decompositions' scratch does not add to the precomputation's peak
-  /// memory.
+  /// while the solver is in use. Called after the solver model's factor is
+  /// released, the decompositions' scratch does not add to the
+  /// precomputation's peak memory.
   /// \returns the number of supernodes compressed by this call.
   std::size_t compress_rows_below(const Rows_below_compression& compression,
                                   unsigned threads = 0) {
