@@ -4,7 +4,7 @@
 #include <expmap/Cholmod_solver.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 
-#include "Largest_rows.h"
+#include "Solutions_to_compare.h"
 #include "Random_grid_operator.h"
 
 #include <boost/test/unit_test.hpp>
@@ -39,15 +39,6 @@ struct Dense_and_compressed {
     compressed.compress_rows_below(c);
     rows.resize(static_cast<std::size_t>(n));
     std::iota(rows.begin(), rows.end(), 0);
-  }
-  std::vector<double> solve_all(const Localized_cholesky_solver& local,
-                                const std::vector<Rhs_entry>& b, int width,
-                                expmap::Solve_statistics* stats = nullptr) const {
-    std::vector<double> out(rows.size() * static_cast<std::size_t>(width));
-    auto ws = local.make_workspace();
-    const auto s = local.solve(b, width, rows.data(), rows.size(), out.data(), *ws);
-    if (stats) *stats = s;
-    return out;
   }
   int n = 0;
   std::vector<int> rows;
@@ -89,8 +80,8 @@ BOOST_AUTO_TEST_CASE(compressed_solves_equal_dense_solves_of_every_width) {
   for (const int width : {1, 2, 3, 5, 9, 16}) {
     const auto b = signed_rhs(nx, width);
     expmap::Solve_statistics dense_stats, compressed_stats;
-    const auto x = f.solve_all(f.dense, b, width, &dense_stats);
-    const auto y = f.solve_all(f.compressed, b, width, &compressed_stats);
+    const auto x = expmap_test::solve_every_row(f.dense, b, width, &dense_stats);
+    const auto y = expmap_test::solve_every_row(f.compressed, b, width, &compressed_stats);
     const double change = relative_change(x, y);
     BOOST_TEST_MESSAGE("width " << width << ": change " << change << " of the largest value, "
                        << compressed_stats.factor_entries << " entries read against "
@@ -126,7 +117,7 @@ BOOST_AUTO_TEST_CASE(compressed_extended_and_pruned_solves_equal_dense_ones) {
   };
   const auto x = pruned(f.dense), y = pruned(f.compressed);
   BOOST_TEST(relative_change(x, y) < 1e-12);
-  BOOST_TEST(relative_change(f.solve_all(f.dense, b, 2), y) < 1e-12);
+  BOOST_TEST(relative_change(expmap_test::solve_every_row(f.dense, b, 2), y) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(compressed_largest_first_solve_finds_the_same_vertices) {
@@ -144,7 +135,8 @@ BOOST_AUTO_TEST_CASE(a_loose_tolerance_shows_in_the_solution) {
   const Dense_and_compressed f(nx, 260, 0.01, 1.0, 1e-3);
   BOOST_TEST_REQUIRE(f.compressed.number_of_compressed_supernodes() >= 4);
   const auto b = signed_rhs(nx, 1);
-  const double change = relative_change(f.solve_all(f.dense, b, 1), f.solve_all(f.compressed, b, 1));
+  const double change = relative_change(expmap_test::solve_every_row(f.dense, b, 1),
+                                        expmap_test::solve_every_row(f.compressed, b, 1));
   BOOST_TEST_MESSAGE("tolerance 1e-3: change " << change);
   BOOST_TEST(change > 1e-8);
 }
@@ -188,18 +180,11 @@ BOOST_AUTO_TEST_CASE(single_precision_blocks_compress_to_float_accuracy) {
   c.single_tolerance = 1e-7;
   c.min_side = 64;
   BOOST_TEST_REQUIRE(compressed.compress_rows_below(c) >= 4u);
-  std::vector<int> rows(A.rows());
-  std::iota(rows.begin(), rows.end(), 0);
   const auto b = signed_rhs(nx, 2);
-  auto solve = [&](const Localized_cholesky_solver& local, expmap::Solve_statistics& stats) {
-    std::vector<double> out(2 * rows.size());
-    auto ws = local.make_workspace();
-    stats = local.solve(b, 2, rows.data(), rows.size(), out.data(), *ws);
-    return out;
-  };
-  expmap::Solve_statistics exact_stats, single_stats, compressed_stats;
-  const auto x = solve(exact, exact_stats), y = solve(single, single_stats),
-             z = solve(compressed, compressed_stats);
+  expmap::Solve_statistics single_stats, compressed_stats;
+  const auto x = expmap_test::solve_every_row(exact, b, 2),
+             y = expmap_test::solve_every_row(single, b, 2, &single_stats),
+             z = expmap_test::solve_every_row(compressed, b, 2, &compressed_stats);
   const double rounding = relative_change(x, y), truncation = relative_change(x, z);
   BOOST_TEST_MESSAGE("change against double precision: floats " << rounding << ", floats "
                      "compressed at 1e-7 " << truncation);

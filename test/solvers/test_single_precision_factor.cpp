@@ -3,7 +3,7 @@
 #include <expmap/Cholmod_solver.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 
-#include "Largest_rows.h"
+#include "Solutions_to_compare.h"
 #include "Random_grid_operator.h"
 
 #include <boost/test/unit_test.hpp>
@@ -27,16 +27,6 @@ struct Both_precisions {
     solver.factor(A);
     exact = Localized_cholesky_solver(solver.factor_view());
     single = Localized_cholesky_solver(solver.factor_view(), Factor_precision::single_precision);
-  }
-  // Every row of the solve of `b` (`width` columns) by `local`.
-  std::vector<double> solve_all(const Localized_cholesky_solver& local,
-                                const std::vector<Rhs_entry>& b, int width) const {
-    std::vector<int> rows(static_cast<std::size_t>(n));
-    std::iota(rows.begin(), rows.end(), 0);
-    std::vector<double> out(rows.size() * static_cast<std::size_t>(width));
-    auto ws = local.make_workspace();
-    local.solve(b, width, rows.data(), rows.size(), out.data(), *ws);
-    return out;
   }
   int n = 0;
   expmap::Cholmod_solver solver;
@@ -63,7 +53,8 @@ BOOST_AUTO_TEST_CASE(single_precision_halves_the_entries_memory) {
 BOOST_AUTO_TEST_CASE(heat_values_keep_their_relative_accuracy) {
   const Both_precisions f(60, 50, 1.0, 1.0);
   const std::vector<Rhs_entry> b{{25 * 60 + 30, 0, 1.0}};
-  const std::vector<double> x = f.solve_all(f.exact, b, 1), y = f.solve_all(f.single, b, 1);
+  const std::vector<double> x = expmap_test::solve_every_row(f.exact, b, 1),
+                            y = expmap_test::solve_every_row(f.single, b, 1);
   double worst = 0, smallest = 1;
   for (std::size_t i = 0; i < x.size(); ++i) {
     BOOST_TEST_REQUIRE(x[i] > 0);
@@ -85,7 +76,8 @@ BOOST_AUTO_TEST_CASE(supernodes_beyond_the_float_range_stay_double) {
   BOOST_TEST(f.single.entry_bytes() > 4 * f.single.number_of_entries());  // some in double
   BOOST_TEST(f.single.entry_bytes() < 6 * f.single.number_of_entries());  // most in floats
   const std::vector<Rhs_entry> b{{25 * 60 + 30, 0, 1.0}};
-  const std::vector<double> x = f.solve_all(f.exact, b, 1), y = f.solve_all(f.single, b, 1);
+  const std::vector<double> x = expmap_test::solve_every_row(f.exact, b, 1),
+                            y = expmap_test::solve_every_row(f.single, b, 1);
   double worst = 0, smallest = 1;
   for (std::size_t i = 0; i < x.size(); ++i) {
     if (!(x[i] > 1e-280)) continue;
@@ -103,7 +95,8 @@ BOOST_AUTO_TEST_CASE(signed_solves_keep_their_accuracy_relative_to_the_solution)
   const Both_precisions f(60, 50, 0.01, 1.0);
   const std::vector<Rhs_entry> b{
       {10 * 60 + 10, 0, 1.0}, {40 * 60 + 50, 0, -1.0}, {30 * 60 + 30, 1, 2.0}, {31 * 60 + 30, 1, -2.0}};
-  const std::vector<double> x = f.solve_all(f.exact, b, 2), y = f.solve_all(f.single, b, 2);
+  const std::vector<double> x = expmap_test::solve_every_row(f.exact, b, 2),
+                            y = expmap_test::solve_every_row(f.single, b, 2);
   for (int c = 0; c < 2; ++c) {
     double scale = 0, worst = 0;
     for (int i = 0; i < f.n; ++i) scale = std::max(scale, std::abs(x[2 * i + c]));
@@ -123,7 +116,7 @@ BOOST_AUTO_TEST_CASE(largest_first_and_pruned_solves_work_in_single_precision) {
 
   std::vector<int> rows(static_cast<std::size_t>(f.n));
   std::iota(rows.begin(), rows.end(), 0);
-  const std::vector<double> x = f.solve_all(f.exact, b, 1);
+  const std::vector<double> x = expmap_test::solve_every_row(f.exact, b, 1);
   std::vector<double> pruned(rows.size());
   auto ws = f.single.make_workspace();
   const double smallest = *std::min_element(x.begin(), x.end());

@@ -817,14 +817,11 @@ class Localized_cholesky_solver {
     return stats;
   }
 
-  // Calls f with the entries array of supernode `sn`, in the precision its
-  // entries are kept in (one branch per supernode; the kernels are compiled
-  // for both).
+  // Calls f with the entries array of supernode `sn` in its precision.
   template <class F>
   auto with_entries(const Supernodal_factor::Supernode& sn, F&& f) const
       -> decltype(f(std::declval<const double*>())) {
-    if (sn.single) return f(m_factor.single_value.data());
-    return f(m_factor.value.data());
+    return m_factor.with_entries(sn, std::forward<F>(f));
   }
 
   // out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several

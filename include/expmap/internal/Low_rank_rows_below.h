@@ -108,8 +108,8 @@ inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_co
   parallel_loop(candidates.size(), batch_thread_count(threads, candidates.size()),
                 [&](std::size_t i) {
     auto& sn = f.supernode[candidates[i]];
-    compressed[i] = sn.single ? compress(sn, f.single_value.data() + sn.below, c.single_tolerance)
-                              : compress(sn, f.value.data() + sn.below, c.tolerance);
+    compressed[i] = f.with_entries(
+        sn, [&](auto* entries) { return compress(sn, entries + sn.below, tolerance_of(sn)); });
   });
   return static_cast<std::size_t>(std::count(compressed.begin(), compressed.end(), 1));
 }

@@ -73,6 +73,22 @@ struct Supernodal_factor {
     return value.size() * sizeof(double) + single_value.size() * sizeof(float);
   }
 
+  /// Calls f with the entries array of supernode `sn` (float or double, the
+  /// precision its entries are kept in; one branch per supernode, and the
+  /// callers' kernels are compiled for both). f returns the same type for
+  /// both. (The return types are deduced, not declared: a declared one would
+  /// instantiate f with the const arrays for a non-const factor too.)
+  template <class F>
+  decltype(auto) with_entries(const Supernode& sn, F&& f) const {
+    if (sn.single) return f(single_value.data());
+    return f(value.data());
+  }
+  template <class F>
+  decltype(auto) with_entries(const Supernode& sn, F&& f) {
+    if (sn.single) return f(single_value.data());
+    return f(value.data());
+  }
+
   /// Offset of row r of a packed lower-triangular diagonal block.
   static std::size_t triangle_row(int r) {
     return static_cast<std::size_t>(r) * static_cast<std::size_t>(r + 1) / 2;

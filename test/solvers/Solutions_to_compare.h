@@ -1,6 +1,7 @@
-// The rows a largest-first solve finds largest, for comparing two solvers.
-#ifndef EXPMAP_TEST_LARGEST_ROWS_H
-#define EXPMAP_TEST_LARGEST_ROWS_H
+// What two localized solvers return for the same right-hand side, to compare
+// them: the solution on every row, and the rows found largest first.
+#ifndef EXPMAP_TEST_SOLUTIONS_TO_COMPARE_H
+#define EXPMAP_TEST_SOLUTIONS_TO_COMPARE_H
 
 #include <expmap/internal/Localized_cholesky_solver.h>
 
@@ -10,6 +11,21 @@
 #include <vector>
 
 namespace expmap_test {
+
+// The solution of A X = b (`width` columns) on every row, row-major; the
+// solve's statistics in `stats` if given.
+inline std::vector<double> solve_every_row(
+    const expmap::internal::Localized_cholesky_solver& local,
+    const std::vector<expmap::internal::Rhs_entry>& b, int width,
+    expmap::Solve_statistics* stats = nullptr) {
+  std::vector<int> rows(static_cast<std::size_t>(local.size()));
+  std::iota(rows.begin(), rows.end(), 0);
+  std::vector<double> out(rows.size() * static_cast<std::size_t>(width));
+  auto ws = local.make_workspace();
+  const auto s = local.solve(b, width, rows.data(), rows.size(), out.data(), *ws);
+  if (stats) *stats = s;
+  return out;
+}
 
 // The `count` rows of largest value that `local.solve_largest` returns for
 // b, sorted by row (ties broken by the smaller row).
@@ -33,4 +49,4 @@ inline std::vector<int> largest_rows(const expmap::internal::Localized_cholesky_
 
 }  // namespace expmap_test
 
-#endif  // EXPMAP_TEST_LARGEST_ROWS_H
+#endif  // EXPMAP_TEST_SOLUTIONS_TO_COMPARE_H
