@@ -67,12 +67,12 @@ inline bool is_linear_in_heat(Angle_estimator estimator) {
 /// geodesic to second order in the distance. Vertices at heat distance up
 /// to `begin` mean edge lengths take the chord's direction; from `begin` to
 /// `end` it turns smoothly (a cubic smoothstep in the distance) into the
-/// heat's direction. `end = 0` gives the paper's pure heat angles. Where
-/// the surface is flat at the blend's scale (its normal turns by less than
-/// 1 rad over `end` mean edge lengths), a query stretches `begin` and
-/// `end` by up to 1.5x (`Heat_exponential_map::max_near_source_widening`):
-/// chords are good directions there, and fold triangles over where the
-/// surface bends.
+/// heat's direction. `end = 0` gives the paper's pure heat angles. A query
+/// scales `begin` and `end` so that the blend ends where the surface normal
+/// has turned by 1 rad (`Heat_exponential_map::blend_normal_turn`), by at
+/// most 1.5x (`Heat_exponential_map::max_near_source_widening`): chords are
+/// good directions where the surface is flat at the blend's scale, and
+/// fold triangles over where it bends (a coarse, curved one-ring).
 /// The chord's direction is read in the source's intrinsic angles: a
 /// neighbour of the source takes its edge's angle as DGPC does (corner
 /// angles summed and rescaled to 2 pi), any other vertex its projected

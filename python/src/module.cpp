@@ -304,8 +304,9 @@ void bind_heat(py::module_& m) {
         "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
         "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"
         "    the source's neighbours' edge lengths) up to begin from the source, heat\n"
-        "    coordinates from end on, blended between; (0, 0) for the paper's pure\n"
-        "    heat coordinates.\n\n"
+        "    coordinates from end on, blended between; each query scales both so\n"
+        "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
+        "    (0, 0) for the paper's pure heat coordinates.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
@@ -317,6 +318,19 @@ void bind_heat(py::module_& m) {
   c.def_property_readonly(
       "mean_edge_length", [](const Bound& b) { return b.method->mean_edge_length(); },
       "Mean edge length h of the mesh.");
+  c.def(
+      "near_source_blend_at",
+      [](const Bound& b, py::handle source) {
+        const expmap::Near_source_blend blend =
+            b.method->near_source_blend_at(index_argument(source, "source"));
+        return std::make_pair(blend.begin, blend.end);
+      },
+      py::arg("source"),
+      "near_source_blend_at(source) -> (begin, end)\n\n"
+      "The near-source blend a query from vertex ``source`` uses, in mean edge\n"
+      "lengths: the option's, scaled so that it ends where the surface normal\n"
+      "has turned by 1 rad (at most 1.5x). Raises ValueError for a source out\n"
+      "of range or isolated.");
 }
 
 }  // namespace

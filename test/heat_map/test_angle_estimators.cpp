@@ -504,7 +504,7 @@ BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_angles_and_their_edge_len
   expmap::Geodesic_polar_coordinates<Surface_mesh> dgpc(mesh);
   double largest = 0, largest_length = 0;
   int compared = 0;
-  for (std::size_t source : {17u, 4000u, 12345u, 20000u}) {
+  for (std::size_t source : {17u, 4000u, 8000u, 12345u, 16000u, 20000u}) {
     const auto a = heat.compute_by_index(source, expmap::Patch::fraction(0.01));
     const auto b = dgpc.compute_by_index(source, expmap::Patch::fraction(0.01));
     std::map<std::size_t, double> dgpc_angle;
@@ -515,8 +515,9 @@ BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_angles_and_their_edge_len
       const auto it = std::find(a.indices.begin(), a.indices.end(), index);
       BOOST_TEST_REQUIRE((it != a.indices.end()));
       const std::size_t i = static_cast<std::size_t>(it - a.indices.begin());
-      // Beyond the blend's start (long edges) the heat's direction enters.
-      if (a.distance[i] > heat.options().near_source_blend.begin * heat.mean_edge_length()) continue;
+      // Beyond the blend's start (long edges, or a blend narrowed where the
+      // surface bends) the heat's direction enters.
+      if (a.distance[i] > heat.near_source_blend_at(source).begin * heat.mean_edge_length()) continue;
       ++compared;
       const double heat_angle = a.angle[i];
       largest = std::max(largest, std::abs(wrap_angle(heat_angle - dgpc_angle.at(index))));
@@ -607,6 +608,65 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
   // above tells the blends apart.
   BOOST_TEST_REQUIRE(beyond >= 10);
   BOOST_TEST(beyond_error > 1e-6);
+}
+
+// Where the surface bends at the blend's scale (a coarse sphere: the normal
+// turns by about 1.6 rad over 6h), the blend is narrowed so that it ends
+// where the normal has turned by blend_normal_turn. Vertices between the
+// narrowed end and the nominal one (6h) then take the heat's own angles,
+// those of the pure heat map ({0, 0}); inside the narrowed blend they do not.
+BOOST_AUTO_TEST_CASE(the_near_source_blend_narrows_where_the_surface_bends) {
+  const expmap::Triangle_soup soup = expmap::make_icosphere(2, 1.0);  // 162 vertices
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(soup, mesh);
+  using Heat = expmap::Heat_exponential_map<Surface_mesh>;
+  const Heat blended(mesh);
+  expmap::Heat_options pure_options;
+  pure_options.near_source_blend = {0, 0};
+  const Heat pure(mesh, pure_options);
+  const double h = blended.mean_edge_length();
+  const expmap::Heat_options defaults;
+  const double nominal_end = defaults.near_source_blend.end * h;
+  const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
+  const int s = 7;
+  const double turn =
+      expmap::internal::normal_turn_rate(arrays, s, expmap::internal::vertex_normal(arrays, s)) *
+      nominal_end;
+  BOOST_TEST_REQUIRE(turn > 1.3 * Heat::blend_normal_turn);
+  const double end = nominal_end * Heat::blend_normal_turn / turn;
+  BOOST_TEST(blended.near_source_blend_at(s).end * h == end, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(blended.near_source_blend_at(s).begin * h == end / 3,
+             boost::test_tools::tolerance(1e-12));
+  const auto patch = expmap::Patch::geodesic_radius(nominal_end);
+  const auto a = blended.compute_by_index(s, patch);
+  const auto b = pure.compute_by_index(s, patch);
+  // The same vertices, perhaps in another order: the source's neighbours
+  // report their edge lengths as distances within the blend.
+  std::map<std::size_t, std::size_t> position_in_b;
+  for (std::size_t i = 0; i < b.size(); ++i) position_in_b[b.indices[i]] = i;
+  BOOST_TEST_REQUIRE(position_in_b.size() == a.size());
+  std::size_t between = 0, inside = 0;
+  double between_change = 0, inside_change = 0;
+  for (std::size_t i = 1; i < a.size(); ++i) {
+    BOOST_TEST_REQUIRE(position_in_b.count(a.indices[i]) == 1);
+    const std::size_t j = position_in_b[a.indices[i]];
+    const double change = std::abs(std::remainder(a.angle[i] - b.angle[j], 2 * M_PI));
+    if (b.distance[j] > 1.02 * end && b.distance[j] < nominal_end) {
+      between_change = std::max(between_change, change);
+      ++between;
+    } else if (b.distance[j] < 0.98 * end) {
+      inside_change = std::max(inside_change, change);
+      ++inside;
+    }
+  }
+  BOOST_TEST_MESSAGE("coarse sphere: blend narrowed to " << end / h << "h (normal turn " << turn
+                     << " rad over 6h); largest change against pure heat angles " << between_change
+                     << " on " << between << " vertices beyond it, " << inside_change << " on "
+                     << inside << " inside");
+  BOOST_TEST_REQUIRE(between >= 10);
+  BOOST_TEST(between_change < 1e-12);
+  BOOST_TEST_REQUIRE(inside >= 5);
+  BOOST_TEST(inside_change > 1e-4);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -175,6 +175,22 @@ def test_bad_options_raise_value_error(cactus):
             expmap.HeatExponentialMap(V, F, **options)
 
 
+def test_near_source_blend_is_scaled_per_source(cactus):
+    _, V, F = cactus
+    mapper = expmap.HeatExponentialMap(V, F)
+    scales = set()
+    for s in range(0, len(V), 37):
+        begin, end = mapper.near_source_blend_at(s)
+        assert 0 < end <= 1.5 * 6.0 + 1e-12
+        assert begin == pytest.approx(end / 3, rel=1e-12)
+        scales.add(round(end, 9))
+    assert len(scales) > 1  # the cactus bends more at some sources than at others
+    assert expmap.HeatExponentialMap(V, F, near_source_blend=(0, 0)).near_source_blend_at(0) == (0, 0)
+    for bad in (len(V), -1, 1.5):
+        with pytest.raises(ValueError):
+            mapper.near_source_blend_at(bad)
+
+
 @pytest.mark.parametrize("method", METHOD_CLASSES)
 def test_bad_queries_raise_value_error(cactus, method):
     _, V, F = cactus
