@@ -136,7 +136,7 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
     << ", "
     << expmap::to_string(options.angle_estimator) << " angles, chords "
     << options.near_source_blend.begin << "h to " << options.near_source_blend.end
-    << "h, wider if flat)";
+    << "h scaled by the bend)";
   return d.str();
 }
 
