@@ -247,7 +247,7 @@ class Heat_exponential_map
   Near_source_blend near_source_blend_at(std::size_t source) const {
     const int s = internal::checked_source(m_indexed.arrays, source);
     const internal::Near_source_zone zone =
-        near_source_zone(s, internal::tangent_frame(m_indexed.arrays, s, std::nullopt));
+        near_source_zone(s, internal::vertex_normal(m_indexed.arrays, s));
     const double h = m_indexed.arrays.mean_edge_length;
     return {zone.begin / h, zone.end / h};
   }
@@ -719,12 +719,13 @@ class Heat_exponential_map
   // max_near_source_widening): the blend then ends where the normal has
   // turned by blend_normal_turn, or at 1.5 times its nominal end where the
   // surface is flatter.
-  internal::Near_source_zone near_source_zone(int s, const internal::Tangent_frame& frame) const {
+  // `normal`: the vertex normal of s (the query's frame's).
+  internal::Near_source_zone near_source_zone(int s, const internal::Vector3& normal) const {
     const double h_mean = m_indexed.arrays.mean_edge_length;
     internal::Near_source_zone zone{m_options.near_source_blend.begin * h_mean,
                                     m_options.near_source_blend.end * h_mean};
     if (zone.end > 0) {
-      const double turn = internal::normal_turn_rate(m_indexed.arrays, s, frame.normal) * zone.end;
+      const double turn = internal::normal_turn_rate(m_indexed.arrays, s, normal) * zone.end;
       const double scale = turn > 0 ? std::min(blend_normal_turn / turn, max_near_source_widening)
                                     : max_near_source_widening;
       zone.begin *= scale;
@@ -1388,7 +1389,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
                                                     const Workspace& ws, Result& result) const {
   const std::size_t width = star_columns(star);
   const bool remove_leak = m_angle_estimator == Angle_estimator::heat_quadratic_fit;
-  const internal::Near_source_zone zone = near_source_zone(s, frame);
+  const internal::Near_source_zone zone = near_source_zone(s, frame.normal);
   std::vector<double> values(star.vertices.size());
   // Step 7: the heat directions of the patch vertices (where the blend
   // wants them), then, for the quadratic fit, their cubic leak removed for
