@@ -6,6 +6,7 @@
 #include <expmap/internal/Localized_cholesky_solver.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <numeric>
 #include <vector>
@@ -45,6 +46,30 @@ inline std::vector<int> largest_rows(const expmap::internal::Localized_cholesky_
   for (std::size_t k = 0; k < count && k < order.size(); ++k) top.push_back(rows[order[k]]);
   std::sort(top.begin(), top.end());
   return top;
+}
+
+// Largest |a - b| over largest |a|.
+inline double relative_change(const std::vector<double>& a, const std::vector<double>& b) {
+  double scale = 0, worst = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    scale = std::max(scale, std::abs(a[i]));
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+  }
+  return worst / scale;
+}
+
+// A signed right-hand side of `width` columns on an nx x nx grid operator
+// (random_grid_operator), as the Poisson and star solves have: three
+// entries per column, near a corner, near the opposite one and in the
+// middle.
+inline std::vector<expmap::internal::Rhs_entry> signed_rhs(int nx, int width) {
+  std::vector<expmap::internal::Rhs_entry> b;
+  for (int c = 0; c < width; ++c) {
+    b.push_back({(10 + 3 * c) * nx + 12 + c, c, 1.0 + c});
+    b.push_back({(nx - 100 - 2 * c) * nx + nx - 90 - c, c, -1.0});
+    b.push_back({(nx / 2) * nx + nx / 2 - 1 + c, c, -static_cast<double>(c)});
+  }
+  return b;
 }
 
 }  // namespace expmap_test

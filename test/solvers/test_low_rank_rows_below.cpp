@@ -46,28 +46,6 @@ struct Dense_and_compressed {
   Localized_cholesky_solver dense, compressed;
 };
 
-// Largest |a - b| over largest |a|.
-double relative_change(const std::vector<double>& a, const std::vector<double>& b) {
-  double scale = 0, worst = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    scale = std::max(scale, std::abs(a[i]));
-    worst = std::max(worst, std::abs(a[i] - b[i]));
-  }
-  return worst / scale;
-}
-
-// A signed right-hand side of `width` columns, as the Poisson and star
-// solves have.
-std::vector<Rhs_entry> signed_rhs(int nx, int width) {
-  std::vector<Rhs_entry> b;
-  for (int c = 0; c < width; ++c) {
-    b.push_back({(10 + 3 * c) * nx + 12 + c, c, 1.0 + c});
-    b.push_back({(160 - 2 * c) * nx + 170 - c, c, -1.0});
-    b.push_back({130 * nx + 129 + c, c, -static_cast<double>(c)});
-  }
-  return b;
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(compressed_solves_equal_dense_solves_of_every_width) {
@@ -78,11 +56,11 @@ BOOST_AUTO_TEST_CASE(compressed_solves_equal_dense_solves_of_every_width) {
   BOOST_TEST_REQUIRE(f.compressed.number_of_compressed_supernodes() >= 4);
   BOOST_TEST(f.dense.number_of_compressed_supernodes() == 0u);
   for (const int width : {1, 2, 3, 5, 9, 16}) {
-    const auto b = signed_rhs(nx, width);
+    const auto b = expmap_test::signed_rhs(nx, width);
     expmap::Solve_statistics dense_stats, compressed_stats;
     const auto x = expmap_test::solve_every_row(f.dense, b, width, &dense_stats);
     const auto y = expmap_test::solve_every_row(f.compressed, b, width, &compressed_stats);
-    const double change = relative_change(x, y);
+    const double change = expmap_test::relative_change(x, y);
     BOOST_TEST_MESSAGE("width " << width << ": change " << change << " of the largest value, "
                        << compressed_stats.factor_entries << " entries read against "
                        << dense_stats.factor_entries);
@@ -106,7 +84,8 @@ BOOST_AUTO_TEST_CASE(compressed_extended_and_pruned_solves_equal_dense_ones) {
     local.extend(f.rows.data(), half, out.data(), *ws);
     return out;
   };
-  BOOST_TEST(relative_change(solve_in_two(f.dense), solve_in_two(f.compressed)) < 1e-12);
+  BOOST_TEST(expmap_test::relative_change(solve_in_two(f.dense), solve_in_two(f.compressed)) <
+             1e-12);
   // Pruned below 1e-30 of the source's heat: both prune the same columns
   // but for values at the threshold.
   auto pruned = [&](const Localized_cholesky_solver& local) {
@@ -116,8 +95,8 @@ BOOST_AUTO_TEST_CASE(compressed_extended_and_pruned_solves_equal_dense_ones) {
     return out;
   };
   const auto x = pruned(f.dense), y = pruned(f.compressed);
-  BOOST_TEST(relative_change(x, y) < 1e-12);
-  BOOST_TEST(relative_change(expmap_test::solve_every_row(f.dense, b, 2), y) < 1e-12);
+  BOOST_TEST(expmap_test::relative_change(x, y) < 1e-12);
+  BOOST_TEST(expmap_test::relative_change(expmap_test::solve_every_row(f.dense, b, 2), y) < 1e-12);
 }
 
 BOOST_AUTO_TEST_CASE(compressed_largest_first_solve_finds_the_same_vertices) {
@@ -134,8 +113,8 @@ BOOST_AUTO_TEST_CASE(a_loose_tolerance_shows_in_the_solution) {
   const int nx = 260;
   const Dense_and_compressed f(nx, 260, 0.01, 1.0, 1e-3);
   BOOST_TEST_REQUIRE(f.compressed.number_of_compressed_supernodes() >= 4);
-  const auto b = signed_rhs(nx, 1);
-  const double change = relative_change(expmap_test::solve_every_row(f.dense, b, 1),
+  const auto b = expmap_test::signed_rhs(nx, 1);
+  const double change = expmap_test::relative_change(expmap_test::solve_every_row(f.dense, b, 1),
                                         expmap_test::solve_every_row(f.compressed, b, 1));
   BOOST_TEST_MESSAGE("tolerance 1e-3: change " << change);
   BOOST_TEST(change > 1e-8);
@@ -180,12 +159,12 @@ BOOST_AUTO_TEST_CASE(single_precision_blocks_compress_to_float_accuracy) {
   c.single_tolerance = 1e-7;
   c.min_side = 64;
   BOOST_TEST_REQUIRE(compressed.compress_rows_below(c) >= 4u);
-  const auto b = signed_rhs(nx, 2);
+  const auto b = expmap_test::signed_rhs(nx, 2);
   expmap::Solve_statistics single_stats, compressed_stats;
   const auto x = expmap_test::solve_every_row(exact, b, 2),
              y = expmap_test::solve_every_row(single, b, 2, &single_stats),
              z = expmap_test::solve_every_row(compressed, b, 2, &compressed_stats);
-  const double rounding = relative_change(x, y), truncation = relative_change(x, z);
+  const double rounding = expmap_test::relative_change(x, y), truncation = expmap_test::relative_change(x, z);
   BOOST_TEST_MESSAGE("change against double precision: floats " << rounding << ", floats "
                      "compressed at 1e-7 " << truncation);
   BOOST_TEST(truncation < 1e-6);
