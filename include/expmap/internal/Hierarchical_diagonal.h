@@ -3,6 +3,9 @@
 #ifndef EXPMAP_INTERNAL_HIERARCHICAL_DIAGONAL_H
 #define EXPMAP_INTERNAL_HIERARCHICAL_DIAGONAL_H
 
+#include <expmap/internal/Dense_row_kernels.h>
+
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -39,37 +42,18 @@ struct Hierarchical_diagonal {
   std::size_t entries = 0;  // entries a solve through the block reads
 };
 
-/// out[w] -= sum over c < count of a[c] * z[c * W + w], in four partial
-/// sums (one would wait on the adder's latency at every step).
-template <int W, class T>
-void hierarchical_subtract_dot(const T* a, const double* z, int count, double* out) {
-  double acc[4][W] = {};
-  int c = 0;
-  for (; c + 4 <= count; c += 4)
-    for (int j = 0; j < 4; ++j)
-      for (int w = 0; w < W; ++w) acc[j][w] += a[c + j] * z[(c + j) * W + w];
-  for (; c < count; ++c)
-    for (int w = 0; w < W; ++w) acc[0][w] += a[c] * z[c * W + w];
-  for (int w = 0; w < W; ++w) out[w] -= (acc[0][w] + acc[1][w]) + (acc[2][w] + acc[3][w]);
-}
-
 /// z[c * W + w] -= sum over i < rows of a(i)[c] * x[i * W + w], for c <
-/// count: four rows of `a` per pass over z (each row of z then read and
-/// written once per four rows, not once per row). `x` is copied per group:
-/// it may lie in z's array (never in the part written), and the compiler
-/// would reload it at every step.
+/// count, four rows of `a` at a time (subtract_four_rows). `x` is copied per
+/// group: it may lie in z's array (never in the part written).
 template <int W, class T, class Row>
-void hierarchical_subtract_rows(Row a, const double* x, int rows, int count, double* z) {
+void subtract_rows(Row a, const double* x, int rows, int count, double* z) {
   int i = 0;
   for (; i + 4 <= rows; i += 4) {
     const T* r[4] = {a(i), a(i + 1), a(i + 2), a(i + 3)};
-    double s[4][W];
+    std::array<std::array<double, W>, 4> s;
     for (int k = 0; k < 4; ++k)
       for (int w = 0; w < W; ++w) s[k][w] = x[(i + k) * W + w];
-    for (int c = 0; c < count; ++c)
-      for (int w = 0; w < W; ++w)
-        z[c * W + w] -= (r[0][c] * s[0][w] + r[1][c] * s[1][w]) +
-                        (r[2][c] * s[2][w] + r[3][c] * s[3][w]);
+    subtract_four_rows<W>(r, s, 0, count, z);
   }
   for (; i < rows; ++i) {
     const T* r = a(i);
@@ -78,14 +62,6 @@ void hierarchical_subtract_rows(Row a, const double* x, int rows, int count, dou
     for (int c = 0; c < count; ++c)
       for (int w = 0; w < W; ++w) z[c * W + w] -= r[c] * s[w];
   }
-}
-
-/// Scratch of the low-rank blocks' products (rank x W), per thread; the
-/// recursion never holds it across a call.
-inline double* hierarchical_scratch(std::size_t size) {
-  thread_local std::vector<double> scratch;
-  scratch.assign(size, 0.0);
-  return scratch.data();
 }
 
 /// Solves L' z = z in place (`z`: positions x W, row-major) on the values
@@ -98,7 +74,7 @@ void hierarchical_forward(const Hierarchical_diagonal& h, const T* l, double* z,
   if (n.mid == n.end) {  // a dense triangle, row by row
     for (int r = 0; r < n.end - n.begin; ++r) {
       const T* row = e + static_cast<std::size_t>(r) * (r + 1) / 2;
-      hierarchical_subtract_dot<W>(row, zb, r, zb + r * W);
+      subtract_dot<W>(row, zb, 0, r, zb + r * W);
       for (int w = 0; w < W; ++w) zb[r * W + w] *= row[r];
     }
     return;
@@ -108,20 +84,18 @@ void hierarchical_forward(const Hierarchical_diagonal& h, const T* l, double* z,
   double* zm = z + static_cast<std::size_t>(n.mid) * W;
   if (n.rank < 0) {
     for (int t = 0; t < rows; ++t)
-      hierarchical_subtract_dot<W>(e + static_cast<std::size_t>(t) * columns, zb, columns,
-                                   zm + t * W);
+      subtract_dot<W>(e + static_cast<std::size_t>(t) * columns, zb, 0, columns, zm + t * W);
   } else if (n.rank > 0) {
     // v = V^T z[begin, mid) by dots along the rows of V^T, then
     // z[mid, end) -= U v along the rows of U^T.
     const T* Ut = e;
     const T* Vt = e + static_cast<std::size_t>(rows) * n.rank;
-    double* v = hierarchical_scratch(static_cast<std::size_t>(n.rank) * W);
+    double* v = zeroed_scratch(static_cast<std::size_t>(n.rank) * W);
     for (int j = 0; j < n.rank; ++j) {
-      hierarchical_subtract_dot<W>(Vt + static_cast<std::size_t>(j) * columns, zb, columns,
-                                   v + j * W);
+      subtract_dot<W>(Vt + static_cast<std::size_t>(j) * columns, zb, 0, columns, v + j * W);
       for (int w = 0; w < W; ++w) v[j * W + w] = -v[j * W + w];
     }
-    hierarchical_subtract_rows<W, T>(
+    subtract_rows<W, T>(
         [Ut, rows](int j) { return Ut + static_cast<std::size_t>(j) * rows; }, v, n.rank, rows,
         zm);
   }
@@ -145,13 +119,13 @@ void hierarchical_backward(const Hierarchical_diagonal& h, const T* l, double* z
         for (int j = k + 1; j < 4; ++j)
           for (int w = 0; w < W; ++w) zb[(r - j) * W + w] -= lr[r - j] * zb[(r - k) * W + w];
       }
-      hierarchical_subtract_rows<W, T>([&row, r](int k) { return row(r - 3 + k); },
+      subtract_rows<W, T>([&row, r](int k) { return row(r - 3 + k); },
                                        zb + (r - 3) * W, 4, r - 3, zb);
     }
     for (; r >= 0; --r) {
       const T* lr = row(r);
       for (int w = 0; w < W; ++w) zb[r * W + w] *= lr[r];
-      hierarchical_subtract_rows<W, T>([lr](int) { return lr; }, zb + r * W, 1, r, zb);
+      subtract_rows<W, T>([lr](int) { return lr; }, zb + r * W, 1, r, zb);
     }
     return;
   }
@@ -159,7 +133,7 @@ void hierarchical_backward(const Hierarchical_diagonal& h, const T* l, double* z
   const int rows = n.end - n.mid, columns = n.mid - n.begin;
   const double* zm = z + static_cast<std::size_t>(n.mid) * W;
   if (n.rank < 0) {
-    hierarchical_subtract_rows<W, T>(
+    subtract_rows<W, T>(
         [e, columns](int t) { return e + static_cast<std::size_t>(t) * columns; }, zm, rows,
         columns, zb);
   } else if (n.rank > 0) {
@@ -167,12 +141,12 @@ void hierarchical_backward(const Hierarchical_diagonal& h, const T* l, double* z
     // z[begin, mid) -= V u along the rows of V^T.
     const T* Ut = e;
     const T* Vt = e + static_cast<std::size_t>(rows) * n.rank;
-    double* u = hierarchical_scratch(static_cast<std::size_t>(n.rank) * W);
+    double* u = zeroed_scratch(static_cast<std::size_t>(n.rank) * W);
     for (int j = 0; j < n.rank; ++j) {
-      hierarchical_subtract_dot<W>(Ut + static_cast<std::size_t>(j) * rows, zm, rows, u + j * W);
+      subtract_dot<W>(Ut + static_cast<std::size_t>(j) * rows, zm, 0, rows, u + j * W);
       for (int w = 0; w < W; ++w) u[j * W + w] = -u[j * W + w];
     }
-    hierarchical_subtract_rows<W, T>(
+    subtract_rows<W, T>(
         [Vt, columns](int j) { return Vt + static_cast<std::size_t>(j) * columns; }, u, n.rank,
         columns, zb);
   }

@@ -7,6 +7,7 @@
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Hierarchical_diagonal_compression.h>
+#include <expmap/internal/Dense_row_kernels.h>
 #include <expmap/internal/Huge_page_allocator.h>
 #include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
@@ -844,25 +845,6 @@ class Localized_cholesky_solver {
     return m_factor.with_entries(sn, std::forward<F>(f));
   }
 
-  // out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
-  // independent partial sums: without them every multiply-add waits for the
-  // previous one (the compiler may not reassociate floating-point sums), and
-  // a one-column solve runs at the latency of the adder, not its throughput.
-  template <int W, class T>
-  static void subtract_dot(const T* l, const double* y, int begin, int end, double* out) {
-    constexpr int lanes = W == 1 ? 4 : 2;
-    std::array<std::array<double, W>, lanes> acc{};
-    int c = begin;
-    for (; c + lanes <= end; c += lanes)
-      for (int j = 0; j < lanes; ++j)
-        for (int w = 0; w < W; ++w) acc[j][w] += l[c + j] * y[(c + j) * W + w];
-    for (; c < end; ++c)
-      for (int w = 0; w < W; ++w) acc[0][w] += l[c] * y[c * W + w];
-    for (int j = 1; j < lanes; ++j)
-      for (int w = 0; w < W; ++w) acc[0][w] += acc[j][w];
-    for (int w = 0; w < W; ++w) out[w] -= acc[0][w];
-  }
-
   // out[j * W + w] -= sum over t < nbelow of l[t * stride + j] * y[rows[t] * W + w]
   // for the C columns j of a supernode's rows below (row-major, `stride`
   // columns per row): part of the back substitution.
@@ -950,14 +932,6 @@ class Localized_cholesky_solver {
       for (int w = 0; w < W; ++w) ys[h.order[static_cast<std::size_t>(a)] * W + w] = z[a * W + w];
   }
 
-  // Per-thread scratch of the low-rank kernels: the r x W products V^T ys
-  // and U^T y (r is at most a few hundred).
-  static double* low_rank_scratch(std::size_t size) {
-    thread_local std::vector<double> scratch;
-    scratch.assign(size, 0.0);
-    return scratch.data();
-  }
-
   // The forward update of the rows below kept as U V^T (rank r): y[rows[t]]
   // -= U[t] (V^T ys), the columns of V^T taken from the [begin, end) pairs
   // of `runs` (the columns propagated).
@@ -968,7 +942,7 @@ class Localized_cholesky_solver {
     const int r = sn.rank;
     const T* U = below;
     const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = low_rank_scratch(static_cast<std::size_t>(r) * W);
+    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
     for (std::size_t q = 0; q < run_values; q += 2)
       for (int c = runs[q]; c < runs[q + 1]; ++c) {
         const T* v = V + static_cast<std::size_t>(c) * r;
@@ -991,7 +965,7 @@ class Localized_cholesky_solver {
     const int r = sn.rank;
     const T* U = below;
     const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = low_rank_scratch(static_cast<std::size_t>(r) * W);
+    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
     for (int i = 0; i < count; ++i) {
       const int t = row(i);
       const T* u = U + static_cast<std::size_t>(t) * r;
@@ -1220,19 +1194,6 @@ class Localized_cholesky_solver {
     }
     for (; c < end; ++c)
       subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-  }
-
-  // ys[a * W + w] -= sum over k < 4 of l[k][a] * x[k][w], for a in
-  // [begin, end): four solved rows subtracted in one pass over ys (each of
-  // its rows read and written once per four rows of L).
-  template <int W, class T>
-  static void subtract_four_rows(const T* const (&l)[4],
-                                 const std::array<std::array<double, W>, 4>& x, int begin,
-                                 int end, double* ys) {
-    for (int a = begin; a < end; ++a)
-      for (int w = 0; w < W; ++w)
-        ys[a * W + w] -=
-            l[0][a] * x[0][w] + l[1][a] * x[1][w] + l[2][a] * x[2][w] + l[3][a] * x[3][w];
   }
 
   // backward_below for more columns than a block: the rows below are read
