@@ -120,7 +120,7 @@ struct Heat_options {
   /// The heat from the source decays exponentially with distance, and so do
   /// the triangular solves' intermediate values: on small patches of large
   /// meshes (a component of at least 200,000 vertices, 2.6 times the patch
-  /// at most 1/50 of it), entries of the heat solves below this tolerance times the
+  /// at most 1/10 of it), entries of the heat solves below this tolerance times the
   /// smallest value read are not propagated
   /// (`Localized_cholesky_solver::solve_pruned`), which skips most of the
   /// dense top separators. Every value read stays within about this
@@ -591,7 +591,7 @@ class Heat_exponential_map
   // heat is `smallest_heat` (if positive) or smallest_heat_guess's.
   void choose_source_heat_pruning(int s, std::size_t count, Workspace& ws,
                                   double smallest_heat = 0) const;
-  static constexpr std::size_t min_component_per_pruned_candidate = 50;
+  static constexpr std::size_t min_component_per_pruned_candidate = 10;
   static constexpr std::size_t min_pruned_component = 200000;
   // Checks a pruned source-heat solve's threshold against the heat of the
   // chosen region; solves again (and chooses the region again) if it was
@@ -855,9 +855,12 @@ bool Heat_exponential_map<TM, VPM, S>::prunes(int s, std::size_t count) const {
   // solves walk whatever its size; it pays when they are most of the work,
   // on patches much smaller than a large mesh. Measured (doc/paper_scale.md):
   // 31% faster queries at 0.26% candidates of a 2.85M-vertex mesh, 9% at
-  // 1.3%; 11-16% and 3-6% on a 711k-vertex one. At 2.6% candidates, on
-  // either, pruned solves read 17-19% fewer factor entries but took as long
-  // (measured before the pruned back substitution went four rows at a time).
+  // 1.3%; 11-16% and 3-6% on a 711k-vertex one. With the tolerance 1e-12
+  // and the Poisson factor compressed, 1-2% patches (2.6-5.2% candidates)
+  // gain too: 0.88 / 0.96 of the unpruned time at 1 / 2% of the
+  // 2.85M-vertex mesh, 0.97 at 1-3% of the 711k-vertex one; 5% patches (13%
+  // candidates) gained nothing, 10% lost 1%. Hence candidates up to a tenth
+  // of the component.
   // On meshes of 26k-45k vertices the far separators are too near for the
   // heat to fall below the threshold: nothing was pruned, and the checks
   // cost 7-11% of a 0.1% query.

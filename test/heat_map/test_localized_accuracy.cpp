@@ -246,7 +246,7 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
   unpruned_options.pruning_tolerance = 0;
   const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
   for (const std::size_t source : {std::size_t{1000}, vertex_count / 2 + 77})
-    for (const double fraction : {0.001, 0.004}) {
+    for (const double fraction : {0.001, 0.004, 0.02}) {
       // A count patch, and a radius patch of its radius (its region found
       // down to a heat, which also sets its pruning threshold).
       const double patch_radius =
