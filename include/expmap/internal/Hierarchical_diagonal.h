@@ -64,6 +64,24 @@ void subtract_rows(Row a, const double* x, int rows, int count, double* z) {
   }
 }
 
+/// z_to -= A B^T z_from for an off-diagonal block kept as the low-rank
+/// product A B^T, given as the `rank` rows of A^T (`to_count` long) and of
+/// B^T (`from_count` long): the dots along B^T's rows first, then the
+/// update along A^T's. The forward solve applies U V^T, the back
+/// substitution its transpose V U^T.
+template <int W, class T>
+void subtract_low_rank(const T* At, int to_count, const T* Bt, int from_count, int rank,
+                       const double* z_from, double* z_to) {
+  double* v = zeroed_scratch(static_cast<std::size_t>(rank) * W);
+  for (int j = 0; j < rank; ++j) {
+    subtract_dot<W>(Bt + static_cast<std::size_t>(j) * from_count, z_from, 0, from_count,
+                    v + j * W);
+    for (int w = 0; w < W; ++w) v[j * W + w] = -v[j * W + w];
+  }
+  subtract_rows<W, T>([At, to_count](int j) { return At + static_cast<std::size_t>(j) * to_count; },
+                      v, rank, to_count, z_to);
+}
+
 /// Solves L' z = z in place (`z`: positions x W, row-major) on the values
 /// `l` (the supernode's entries from its diagonal block's offset on).
 template <int W, class T>
@@ -85,19 +103,10 @@ void hierarchical_forward(const Hierarchical_diagonal& h, const T* l, double* z,
   if (n.rank < 0) {
     for (int t = 0; t < rows; ++t)
       subtract_dot<W>(e + static_cast<std::size_t>(t) * columns, zb, 0, columns, zm + t * W);
-  } else if (n.rank > 0) {
-    // v = V^T z[begin, mid) by dots along the rows of V^T, then
-    // z[mid, end) -= U v along the rows of U^T.
+  } else if (n.rank > 0) {  // z[mid, end) -= U V^T z[begin, mid)
     const T* Ut = e;
     const T* Vt = e + static_cast<std::size_t>(rows) * n.rank;
-    double* v = zeroed_scratch(static_cast<std::size_t>(n.rank) * W);
-    for (int j = 0; j < n.rank; ++j) {
-      subtract_dot<W>(Vt + static_cast<std::size_t>(j) * columns, zb, 0, columns, v + j * W);
-      for (int w = 0; w < W; ++w) v[j * W + w] = -v[j * W + w];
-    }
-    subtract_rows<W, T>(
-        [Ut, rows](int j) { return Ut + static_cast<std::size_t>(j) * rows; }, v, n.rank, rows,
-        zm);
+    subtract_low_rank<W, T>(Ut, rows, Vt, columns, n.rank, zb, zm);
   }
   hierarchical_forward<W>(h, l, z, n.right);
 }
@@ -136,19 +145,10 @@ void hierarchical_backward(const Hierarchical_diagonal& h, const T* l, double* z
     subtract_rows<W, T>(
         [e, columns](int t) { return e + static_cast<std::size_t>(t) * columns; }, zm, rows,
         columns, zb);
-  } else if (n.rank > 0) {
-    // u = U^T z[mid, end) by dots along the rows of U^T, then
-    // z[begin, mid) -= V u along the rows of V^T.
+  } else if (n.rank > 0) {  // z[begin, mid) -= V U^T z[mid, end)
     const T* Ut = e;
     const T* Vt = e + static_cast<std::size_t>(rows) * n.rank;
-    double* u = zeroed_scratch(static_cast<std::size_t>(n.rank) * W);
-    for (int j = 0; j < n.rank; ++j) {
-      subtract_dot<W>(Ut + static_cast<std::size_t>(j) * rows, zm, 0, rows, u + j * W);
-      for (int w = 0; w < W; ++w) u[j * W + w] = -u[j * W + w];
-    }
-    subtract_rows<W, T>(
-        [Vt, columns](int j) { return Vt + static_cast<std::size_t>(j) * columns; }, u, n.rank,
-        columns, zb);
+    subtract_low_rank<W, T>(Vt, columns, Ut, rows, n.rank, zm, zb);
   }
   hierarchical_backward<W>(h, l, z, i + 1);
 }
