@@ -45,10 +45,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <future>
 #include <limits>
 #include <memory>
 #include <numeric>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace expmap {
@@ -181,6 +183,19 @@ struct Heat_options {
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   /// Geometric directions next to the source, heat directions beyond.
   Near_source_blend near_source_blend;
+  /// Threads one query runs on: 1 or 2. With 2, the star solve of the
+  /// angles (manual, section 2, step 6) runs on a second thread, for the
+  /// whole region, while the calling thread integrates the distance on it
+  /// (step 4); the patch then reads its rows. Where no thread can be
+  /// started, the query runs on one. The maps are those of one thread up to round-off
+  /// (1e-15), and a query takes 0.89-0.97x the time at 2-25% patches of
+  /// meshes of 26k-44k vertices, 0.84-0.87x at 1-25% of a 711k-vertex one
+  /// and 0.79x at 0.1% of a 2.85M-vertex one (doc/performance.md); regions
+  /// of fewer than 1,500 vertices stay on one thread. Costs another n x 16
+  /// doubles of workspace per query in flight. For one query at a time, as
+  /// in an interactive tool; `compute_many()` already keeps every core busy
+  /// with a query each.
+  int query_threads = 1;
 };
 
 /// \ingroup PkgExpmapRef
@@ -334,6 +349,13 @@ class Heat_exponential_map
   static constexpr double blend_normal_turn = 1.0;
 
  private:
+  // What a star solve writes: its right-hand side and the heat from the
+  // star on the rows asked for, row-major.
+  struct Star_solve {
+    std::vector<internal::Rhs_entry> rhs;
+    std::vector<double> heat;
+  };
+
   struct Workspace {
     explicit Workspace(const Heat_exponential_map& owner)
         : heat_solve(owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes()),
@@ -342,11 +364,15 @@ class Heat_exponential_map
       if (owner.m_separate_distance_heat)
         distance_heat_solve = internal::Localized_cholesky_solver::Workspace(
             owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes());
+      if (owner.m_options.query_threads > 1)
+        region_star_solve = internal::Localized_cholesky_solver::Workspace(
+            owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes());
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
     }
     internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
+    internal::Localized_cholesky_solver::Workspace region_star_solve;  // query_threads 2 only
     internal::Vertex_marks in_region, seen, wanted;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
@@ -361,10 +387,11 @@ class Heat_exponential_map
     std::vector<int> frontier, next_frontier;  // scratch for grow_rings_around
     std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
+    Star_solve star;                   // the star solve on the patch
+    Star_solve region_star;            // the star solve of a second thread, on the region
     std::vector<double> heat;          // heat from the source on the candidates
     bool prune = false;                // whether this query's heat solves are pruned
     double heat_drop_below = 0;        // the source heat's pruning threshold (0: not pruned)
-    std::vector<double> star_heat;     // heat from the star on the patch, row-major
     std::vector<double> region_heat;   // ws.heat at each region vertex
     std::vector<double> divergence, potential;
   };
@@ -390,6 +417,9 @@ class Heat_exponential_map
         !(options.poisson_compression_tolerance <= 1e-10))
       throw Invalid_input("poisson_compression_tolerance must be in [0, 1e-10] (got " +
                           std::to_string(options.poisson_compression_tolerance) + ")");
+    if (options.query_threads != 1 && options.query_threads != 2)
+      throw Invalid_input("query_threads must be 1 or 2 (got " +
+                          std::to_string(options.query_threads) + ")");
     if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
       throw Invalid_input("region_growth must be at least 1 (got " +
                           std::to_string(options.region_growth) + ")");
@@ -689,13 +719,31 @@ class Heat_exponential_map
   // heat array.
   static void hottest_rows(const std::vector<std::size_t>& rows, std::size_t count,
                            std::vector<std::size_t>& out, Workspace& ws);
-  // Solves the heat from the source and its neighbours for the patch
-  // vertices `ws.patch`: fills ws.star_heat.
-  Solve_statistics solve_star_heat(const internal::Star_gradient& star, Workspace& ws) const;
+  // Solves the heat from the source and its neighbours for `rows` (region
+  // vertices: the patch's, or the whole region's beside the distance) into
+  // out.heat, in `solver`; reads only ws's region and its source heat, so
+  // it may run beside integrate_distance.
+  Solve_statistics solve_star_heat(const internal::Star_gradient& star,
+                                   const std::vector<int>& rows, Star_solve& out,
+                                   internal::Localized_cholesky_solver::Workspace& solver,
+                                   const Workspace& ws) const;
   // The star solve's pruning threshold (0: none), from the source heat on
-  // the patch, and the smallest magnitude it is checked against.
-  double star_heat_drop_below(const Workspace& ws) const;
-  double smallest_star_value(std::size_t width, const Workspace& ws) const;
+  // `rows`, and the smallest magnitude it is checked against.
+  double star_heat_drop_below(const std::vector<int>& rows, const Workspace& ws) const;
+  double smallest_star_value(std::size_t width, const std::vector<double>& heat) const;
+  // A second thread starts (about 30 microseconds) only for regions of at
+  // least this many vertices: a 1% patch of a 26k-vertex mesh (a region of
+  // 522, a 0.24 ms query) took 1.12x the time with it.
+  static constexpr std::size_t min_region_beside_distance = 1500;
+  // The region's star solve read at the patch's rows (`order`, into the
+  // region): fills ws.star.heat as the patch's own solve would.
+  static void read_star_heat_on_patch(std::size_t width, const std::vector<std::size_t>& order,
+                                      Workspace& ws) {
+    ws.star.heat.resize(order.size() * width);
+    for (std::size_t p = 0; p < order.size(); ++p)
+      std::copy_n(ws.region_star.heat.data() + order[p] * width, width,
+                  ws.star.heat.data() + p * width);
+  }
   // The linear map from heat values on the star of s to their gradient at
   // s, for the chosen angle estimator.
   internal::Star_gradient source_star_gradient(int s, const internal::Tangent_frame& frame) const {
@@ -1100,47 +1148,49 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::integrate_distance(int s, Wor
 
 template <class TM, class VPM, class S>
 Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
-    const internal::Star_gradient& star, Workspace& ws) const {
-  // Step 1 (angle part), read on the patch only. A linear estimator needs
-  // two columns, the rows of the gradient weights: by symmetry their
-  // solution at v is the estimated gradient of the heat from v. A
-  // logarithmic one needs the heat from every patch vertex on the star:
-  // one column per star vertex.
+    const internal::Star_gradient& star, const std::vector<int>& rows, Star_solve& out,
+    internal::Localized_cholesky_solver::Workspace& solver, const Workspace& ws) const {
+  // Step 1 (angle part), read on the patch (or, beside the distance, on
+  // the region). A linear estimator needs two columns, the rows of the
+  // gradient weights: by symmetry their solution at v is the estimated
+  // gradient of the heat from v. A logarithmic one needs the heat from
+  // every patch vertex on the star: one column per star vertex.
   const std::size_t width = star_columns(star);
-  ws.rhs.clear();
+  out.rhs.clear();
   if (is_linear_in_heat(m_angle_estimator)) {
     for (std::size_t c = 0; c < star.vertices.size(); ++c) {
-      ws.rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
-      ws.rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
+      out.rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
+      out.rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
     }
-    if (width == 3) ws.rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
+    if (width == 3) out.rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
   } else {
     for (std::size_t c = 0; c < width; ++c)
-      ws.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
+      out.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
   }
-  ws.star_heat.resize(ws.patch.size() * width);
-  const double drop_below = star_heat_drop_below(ws);
+  out.heat.resize(rows.size() * width);
+  const double drop_below = star_heat_drop_below(rows, ws);
   if (drop_below == 0)
-    return m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.patch.data(), ws.patch.size(),
-                              ws.star_heat.data(), ws.heat_solve);
+    return m_heat_local.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
+                              out.heat.data(), solver);
   Solve_statistics stats =
-      m_heat_local.solve_pruned(ws.rhs, static_cast<int>(width), ws.patch.data(), ws.patch.size(),
-                                ws.star_heat.data(), ws.heat_solve, drop_below);
+      m_heat_local.solve_pruned(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
+                                out.heat.data(), solver, drop_below);
   // The gradient columns change sign, so pruning need not lower them: the
   // check is that every value read stays far above the threshold.
-  if (drop_below > m_pruning_tolerance * smallest_star_value(width, ws))
-    stats += m_heat_local.solve(ws.rhs, static_cast<int>(width), ws.patch.data(), ws.patch.size(),
-                                ws.star_heat.data(), ws.heat_solve);
+  if (drop_below > m_pruning_tolerance * smallest_star_value(width, out.heat))
+    stats += m_heat_local.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
+                                out.heat.data(), solver);
   return stats;
 }
 
 template <class TM, class VPM, class S>
-double Heat_exponential_map<TM, VPM, S>::star_heat_drop_below(const Workspace& ws) const {
-  // The source heat on the patch sets the scale (it is the star's heat,
+double Heat_exponential_map<TM, VPM, S>::star_heat_drop_below(const std::vector<int>& rows,
+                                                              const Workspace& ws) const {
+  // The source heat on the rows sets the scale (it is the star's heat,
   // only with the distance time step if that differs: then no pruning).
   if (!ws.prune || m_separate_distance_heat) return 0;
   double smallest = std::numeric_limits<double>::infinity();
-  for (const int v : ws.patch)
+  for (const int v : rows)
     smallest = std::min(smallest, ws.region_heat[static_cast<std::size_t>(ws.in_region.value(v))]);
   // A neighbour's heat at v is within a small factor of the source's; the
   // gradient of the heat from v at s is about that heat over sqrt(t) (it
@@ -1150,18 +1200,15 @@ double Heat_exponential_map<TM, VPM, S>::star_heat_drop_below(const Workspace& w
 }
 
 template <class TM, class VPM, class S>
-double Heat_exponential_map<TM, VPM, S>::smallest_star_value(std::size_t width,
-                                                             const Workspace& ws) const {
+double Heat_exponential_map<TM, VPM, S>::smallest_star_value(
+    std::size_t width, const std::vector<double>& heat) const {
   double smallest = std::numeric_limits<double>::infinity();
   if (is_linear_in_heat(m_angle_estimator)) {  // the gradient, a vector: its squared length
-    for (std::size_t i = 0; i < ws.patch.size(); ++i) {
-      const double* h = ws.star_heat.data() + i * width;
-      smallest = std::min(smallest, h[0] * h[0] + h[1] * h[1]);
-    }
+    for (std::size_t i = 0; i + width <= heat.size(); i += width)
+      smallest = std::min(smallest, heat[i] * heat[i] + heat[i + 1] * heat[i + 1]);
     return std::sqrt(smallest);
   }
-  for (std::size_t i = 0; i < ws.patch.size() * width; ++i)
-    smallest = std::min(smallest, ws.star_heat[i]);
+  for (const double h : heat) smallest = std::min(smallest, h);
   return smallest;
 }
 
@@ -1263,7 +1310,26 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     }
     result.statistics += confirm_pruned_source_heat(s, largest_first, *ws);
     mark_region(*ws);
-    result.statistics += integrate_distance(s, *ws);
+    // Steps 2 and 3; with a second thread, the star solve beside them, on
+    // the region (the patch is not known before the distance).
+    bool star_beside =
+        m_options.query_threads > 1 && ws->region.size() >= min_region_beside_distance;
+    {
+      std::future<Solve_statistics> region_star;
+      if (star_beside) {
+        try {
+          region_star = std::async(std::launch::async, [this, &star, &w = *ws] {
+            return solve_star_heat(star, w.region, w.region_star, w.region_star_solve, w);
+          });
+        } catch (const std::system_error&) {
+          star_beside = false;  // no thread to be had: the star after the distance
+        }
+      }
+      // (If this throws, the future's destructor waits for the star solve,
+      // which uses the workspace, before the workspace goes back.)
+      result.statistics += integrate_distance(s, *ws);
+      if (star_beside) result.statistics += region_star.get();
+    }
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, *ws);
     const double reach = patch.kind() == Patch::Kind::geodesic_radius
                              ? patch.radius()
@@ -1281,7 +1347,10 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     if (whole_component || (complete && reach < end.vertex && reach * margin <= end.edge)) {
       ws->patch.clear();
       for (std::size_t i : order) ws->patch.push_back(ws->region[i]);
-      result.statistics += solve_star_heat(star, *ws);
+      if (star_beside)
+        read_star_heat_on_patch(star_columns(star), order, *ws);
+      else
+        result.statistics += solve_star_heat(star, ws->patch, ws->star, ws->heat_solve, *ws);
       write_result(s, frame, star, order, *ws, result);
       return result;
     }
@@ -1435,7 +1504,7 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
   for (std::size_t p = 0; p < order.size(); ++p) {
     const std::size_t i = order[p];
     const int v = ws.region[i];
-    const double* h = ws.star_heat.data() + p * width;
+    const double* h = ws.star.heat.data() + p * width;
     // The heat from v at the source: its own column for a logarithmic
     // estimator, the source heat of the distance step (or, where that has
     // another time, the third column of the star solve) otherwise.

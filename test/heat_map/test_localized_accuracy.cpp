@@ -345,6 +345,66 @@ BOOST_AUTO_TEST_CASE(compressed_poisson_rows_change_nothing_but_the_work) {
     }
 }
 
+// query_threads 2 solves the star beside the distance, on the whole region,
+// and reads the patch's rows from it: the same maps as one thread, for
+// pruned and unpruned solves, count and radius patches, and the angle
+// estimators of two, three and one-per-star-vertex columns. Small regions
+// stay on one thread (the same work); larger ones read more entries.
+BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
+  Surface_mesh torus, sphere;
+  make_jittered_torus(torus);
+  expmap::soup_to_mesh(expmap::make_icosphere(5), sphere);
+  expmap::Heat_options two_threads;
+  two_threads.query_threads = 2;
+  auto compare = [](const auto& one, const auto& two, std::size_t source,
+                    const expmap::Patch& patch, const char* what) {
+    const auto a = one.compute_by_index(source, patch);
+    const auto b = two.compute_by_index(source, patch);
+    BOOST_TEST_REQUIRE(a.indices == b.indices);
+    const auto [distance_change, angle_change] = largest_changes(b, a);
+    BOOST_TEST_MESSAGE(what << ", source " << source << ", " << a.size() << " vertices: "
+                            << a.statistics.factor_entries << " factor entries on one thread, "
+                            << b.statistics.factor_entries << " on two; distance "
+                            << distance_change << " of the radius, angle " << angle_change
+                            << " rad");
+    BOOST_TEST(distance_change <= 1e-12);
+    BOOST_TEST(angle_change <= 1e-12);
+    if (2 * a.size() < 1000)
+      BOOST_TEST(a.statistics.factor_entries == b.statistics.factor_entries);
+    if (2 * a.size() > 2000)
+      BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
+  };
+  {
+    const expmap::Heat_exponential_map<Surface_mesh> one(torus), two(torus, two_threads);
+    for (const double fraction : {0.001, 0.004, 0.02, 0.1}) {
+      const double radius =
+          one.compute_by_index(1000, expmap::Patch::fraction(fraction)).distance.back();
+      compare(one, two, 1000, expmap::Patch::fraction(fraction), "torus, count patch");
+      compare(one, two, 1000, expmap::Patch::geodesic_radius(radius), "torus, radius patch");
+    }
+  }
+  expmap::Heat_options logarithmic, distance_time;
+  logarithmic.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
+  distance_time.distance_time_factor = 2.0;
+  for (const expmap::Heat_options& options : {logarithmic, distance_time}) {
+    expmap::Heat_options with_two = options;
+    with_two.query_threads = 2;
+    const expmap::Heat_exponential_map<Surface_mesh> one(sphere, options), two(sphere, with_two);
+    compare(one, two, 17, expmap::Patch::fraction(0.3), "icosphere");
+  }
+}
+
+BOOST_AUTO_TEST_CASE(query_threads_other_than_one_or_two_are_rejected) {
+  Surface_mesh mesh;
+  expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
+  for (const int threads : {0, 3, -1}) {
+    expmap::Heat_options options;
+    options.query_threads = threads;
+    BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
+                      expmap::Invalid_input);
+  }
+}
+
 BOOST_AUTO_TEST_CASE(solve_tolerances_out_of_range_are_rejected) {
   Surface_mesh mesh;
   expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
