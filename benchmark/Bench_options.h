@@ -46,6 +46,9 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --factor-precision P     double | single: Heat_options::factor_precision
                            (default: double, the library's; the stream
                            floor counts every factor entry as a double)
+  --query-threads N        1 | 2: Heat_options::query_threads, the threads
+                           one heat query runs on (default 1; the speed
+                           targets are for one)
   --poisson-compression T  Heat_options::poisson_compression_tolerance
                            (default: the library's; 0 keeps the Poisson
                            factor dense)
@@ -75,6 +78,7 @@ struct Bench_options {
   std::size_t repeats = 3;
   double time_factor = 0;  // 0: the library's default
   bool single_precision_factors = false;
+  int query_threads = 1;
   double poisson_compression = -1;  // negative: the library's default
   std::string csv, stats, detail;
   bool help = false;
@@ -162,6 +166,10 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
       if (value != "double" && value != "single")
         throw Usage_error("--factor-precision must be 'double' or 'single' (got '" + value + "')");
       o.single_precision_factors = value == "single";
+    } else if (arg == "--query-threads") {
+      if (value != "1" && value != "2")
+        throw Usage_error("--query-threads must be 1 or 2 (got '" + value + "')");
+      o.query_threads = value == "2" ? 2 : 1;
     } else if (arg == "--poisson-compression") {
       o.poisson_compression = parse_double(arg, value);
       if (!(o.poisson_compression >= 0 && o.poisson_compression <= 1e-10))

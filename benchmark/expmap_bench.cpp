@@ -334,6 +334,7 @@ class Benchmark {
       m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
     if (options.poisson_compression >= 0)
       m_heat_options.poisson_compression_tolerance = options.poisson_compression;
+    m_heat_options.query_threads = options.query_threads;
   }
 
   void run(const std::vector<Mesh_job>& jobs) {
@@ -747,6 +748,7 @@ int main(int argc, char** argv) {
     if (options.full_sources > 0)
       std::cout << ", heat-full on the first " << options.full_sources;
     if (options.single_precision_factors) std::cout << "; single-precision factors";
+    if (options.query_threads > 1) std::cout << "; heat queries on " << options.query_threads << " threads";
     std::cout << "\n";
     Benchmark benchmark(options);
     benchmark.run(mesh_jobs(options));

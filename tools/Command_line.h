@@ -52,6 +52,7 @@ struct Compute_arguments {
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
   std::optional<std::string> factor_precision;  // "double" or "single"
+  std::optional<std::string> query_threads;     // "1" or "2"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<std::array<double, 3>> reference;
@@ -241,6 +242,8 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       one_of(a.vertex_area, "mixed-voronoi", "barycentric");
     } else if (name == "--factor-precision") {
       one_of(a.factor_precision, "double", "single");
+    } else if (name == "--query-threads") {
+      one_of(a.query_threads, "1", "2");
     } else if (name == "--angles") {
       once(a.angles.has_value());
       try {

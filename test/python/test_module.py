@@ -100,6 +100,18 @@ def test_single_precision_factors_move_distances_by_float_round_off(elephant):
     assert np.max(np.abs(single.r - double.r)) > 0  # the factor was rounded
 
 
+def test_a_second_query_thread_gives_the_same_map(elephant):
+    # A 50% patch: a region of every vertex, solved for the star beside the
+    # distance.
+    _, V, F = elephant
+    one = expmap.HeatExponentialMap(V, F).compute(0, fraction=0.5)
+    two = expmap.HeatExponentialMap(V, F, query_threads=2).compute(0, fraction=0.5)
+    np.testing.assert_array_equal(two.vertices, one.vertices)
+    radius = one.r.max()
+    assert np.max(np.abs(two.r - one.r)) <= 1e-12 * radius
+    assert np.max(np.abs(np.angle(np.exp(1j * (two.theta - one.theta))))) <= 1e-12
+
+
 def test_failed_query_in_a_batch_keeps_the_others(elephant):
     _, V, F = elephant
     isolated = len(V)
@@ -170,7 +182,8 @@ def test_bad_options_raise_value_error(cactus):
     for options in ({"time_factor": 0.0}, {"time_factor": float("nan")}, {"time_factor": -1.0},
                     {"distance_time_factor": float("inf")}, {"region_growth": 0.5},
                     {"pruning_tolerance": -1.0}, {"poisson_compression_tolerance": 1e-6},
-                    {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None}):
+                    {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None},
+                    {"query_threads": 0}, {"query_threads": 3}):
         with pytest.raises(ValueError):
             expmap.HeatExponentialMap(V, F, **options)
 

@@ -233,6 +233,16 @@ BOOST_AUTO_TEST_CASE(single_precision_factors_give_distances_to_float_round_off)
                boost::test_tools::tolerance(1e-5));
 }
 
+BOOST_AUTO_TEST_CASE(two_query_threads_give_the_same_map) {
+  const std::string query = "compute " + file("grid.off") + " --source 24 --fraction 1";
+  BOOST_TEST_REQUIRE(run(query + " -o " + file("one.csv")) == 0, "stderr: " << err());
+  BOOST_TEST_REQUIRE(run(query + " --query-threads 2 -o " + file("two.csv")) == 0,
+                     "stderr: " << err());
+  BOOST_TEST(out().find("2 threads per query") != std::string::npos, out());
+  BOOST_TEST(read_lines(dir / "two.csv") == read_lines(dir / "one.csv"),
+             boost::test_tools::per_element());
+}
+
 BOOST_AUTO_TEST_CASE(polygon_meshes_are_triangulated_by_default) {
   for (const char* flag : {"", " --triangulate"}) {
     const int status = run("compute " + file("quads.off") + flag + " --source 1 --fraction 1 -o " +
@@ -249,7 +259,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
         "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision", "--angles",
-        "--near-source-blend",
+        "--query-threads", "--near-source-blend",
         "--reference",
         "--no-triangulate", "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
@@ -281,6 +291,8 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
   check_error(grid + " --source 0 --vertices 10 --method dem --near-source-blend 1,2" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --factor-precision half" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dgpc --factor-precision single" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --query-threads 3" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dem --query-threads 2" + csv, 2);
   check_error(grid + " --source 0 --radius", 2);
   check_error(grid + " --source 0 --vertices 10", 2);
   check_error("", 2);
@@ -434,7 +446,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   for (const char* option :
        {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
         "--time-factor", "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision",
-        "--angles",
+        "--query-threads", "--angles",
         "--near-source-blend", "--reference",
         "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
