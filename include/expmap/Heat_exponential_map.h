@@ -28,6 +28,7 @@
 #include <expmap/internal/Near_source_zone.h>
 #include <expmap/internal/Nearest_first.h>
 #include <expmap/internal/Normalized_gradient_divergence.h>
+#include <expmap/internal/Parallel_loop.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Source_one_ring.h>
@@ -193,8 +194,8 @@ struct Heat_options {
   /// and 0.79x at 0.1% of a 2.85M-vertex one (doc/performance.md); regions
   /// of fewer than 1,500 vertices stay on one thread. Costs another n x 16
   /// doubles of workspace per query in flight. For one query at a time, as
-  /// in an interactive tool; `compute_many()` already keeps every core busy
-  /// with a query each.
+  /// in an interactive tool: `compute_many()` on more than one thread
+  /// already keeps every core busy with a query each, and runs each on one.
   int query_threads = 1;
 };
 
@@ -1312,8 +1313,8 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
     mark_region(*ws);
     // Steps 2 and 3; with a second thread, the star solve beside them, on
     // the region (the patch is not known before the distance).
-    bool star_beside =
-        m_options.query_threads > 1 && ws->region.size() >= min_region_beside_distance;
+    bool star_beside = m_options.query_threads > 1 && !internal::in_parallel_loop() &&
+                       ws->region.size() >= min_region_beside_distance;
     {
       std::future<Solve_statistics> region_star;
       if (star_beside) {

@@ -22,6 +22,15 @@ inline unsigned batch_thread_count(unsigned requested, std::size_t work) {
   return static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, work)));
 }
 
+/// Whether the calling thread runs a parallel loop's body beside other
+/// threads. Work that could start a thread of its own (a heat query's
+/// second thread, `Heat_options::query_threads`) does not there: the loop
+/// already keeps a thread per core busy.
+inline bool& in_parallel_loop() {
+  thread_local bool inside = false;
+  return inside;
+}
+
 /// Calls `body(i)` once for every i in [0, count) on `threads` threads, the
 /// calling one included. Each thread takes the next index from a shared
 /// counter when it is done with the last, so uneven work (patches near a
@@ -38,6 +47,12 @@ void parallel_loop(std::size_t count, unsigned threads, Body body) {
   std::mutex failure_mutex;
   std::exception_ptr failure;
   auto work = [&]() {
+    // Marked while it works for the loop (the calling thread lives on after).
+    struct Mark {
+      bool before;
+      explicit Mark(bool parallel) : before(in_parallel_loop()) { in_parallel_loop() = parallel; }
+      ~Mark() { in_parallel_loop() = before; }
+    } mark(threads > 1);
     while (!stop.load(std::memory_order_relaxed)) {
       const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
       if (i >= count) return;
