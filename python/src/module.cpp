@@ -312,8 +312,9 @@ void bind_heat(py::module_& m) {
         "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
         "    (0, 0) for the paper's pure heat coordinates.\n"
         "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
-        "    runs beside the distance's (the same maps, 0.85-0.97x the time on\n"
-        "    patches of 750+ vertices). compute_many already runs a source per thread.\n\n"
+        "    runs beside the distance's (the same maps, 0.79-0.97x the time on\n"
+        "    patches of 750+ vertices). compute_many on more than one thread runs a\n"
+        "    source per thread, each on one.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
