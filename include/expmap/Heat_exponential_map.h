@@ -192,8 +192,9 @@ struct Heat_options {
   /// (1e-15), and a query takes 0.89-0.97x the time at 2-25% patches of
   /// meshes of 26k-44k vertices, 0.84-0.87x at 1-25% of a 711k-vertex one
   /// and 0.79x at 0.1% of a 2.85M-vertex one (doc/performance.md); regions
-  /// of fewer than 1,500 vertices stay on one thread. Costs another n x 16
-  /// doubles of workspace per query in flight. For one query at a time, as
+  /// of fewer than 1,500 vertices stay on one thread. The second thread's
+  /// workspace, another n x 16 doubles, is made by the first query that
+  /// uses it. For one query at a time, as
   /// in an interactive tool: `compute_many()` on more than one thread
   /// already keeps every core busy with a query each, and runs each on one.
   int query_threads = 1;
@@ -365,15 +366,15 @@ class Heat_exponential_map
       if (owner.m_separate_distance_heat)
         distance_heat_solve = internal::Localized_cholesky_solver::Workspace(
             owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes());
-      if (owner.m_options.query_threads > 1)
-        region_star_solve = internal::Localized_cholesky_solver::Workspace(
-            owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes());
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
     }
     internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
-    internal::Localized_cholesky_solver::Workspace region_star_solve;  // query_threads 2 only
+    // The second thread's (query_threads 2): sized by the first solve that
+    // uses it, so a workspace of a parallel batch, whose queries run on one
+    // thread each, never holds it.
+    internal::Localized_cholesky_solver::Workspace region_star_solve;
     internal::Vertex_marks in_region, seen, wanted;
     std::vector<double> tentative;
     std::vector<int> candidates;       // vertices the heat is solved for
