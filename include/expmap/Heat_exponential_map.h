@@ -193,8 +193,8 @@ struct Heat_options {
   /// meshes of 26k-44k vertices, 0.84-0.87x at 1-25% of a 711k-vertex one
   /// and 0.79x at 0.1% of a 2.85M-vertex one (doc/performance.md); regions
   /// of fewer than 1,500 vertices stay on one thread. The second thread's
-  /// workspace, another n x 16 doubles, is made by the first query that
-  /// uses it. For one query at a time, as
+  /// workspace, another n x 16 doubles, is made with the object (for its
+  /// first query) and by any other query that uses it. For one query at a time, as
   /// in an interactive tool: `compute_many()` on more than one thread
   /// already keeps every core busy with a query each, and runs each on one.
   int query_threads = 1;
@@ -254,7 +254,14 @@ class Heat_exponential_map
     build_operators();
     // One workspace ready for the first query: touching its O(n) memory for
     // the first time costs page faults that belong to the precomputation.
-    m_workspaces.acquire([this] { return std::make_unique<Workspace>(*this); });
+    // With a second thread per query, its solver workspace too (one query
+    // at a time is what that option is for).
+    m_workspaces.acquire([this] {
+      auto ws = std::make_unique<Workspace>(*this);
+      if (m_options.query_threads > 1)
+        ws->region_star_solve = std::move(*m_heat_local.make_workspace());
+      return ws;
+    });
   }
 
   /// Geodesic polar coordinates around the vertex of index `source` in
@@ -372,8 +379,9 @@ class Heat_exponential_map
     }
     internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
     // The second thread's (query_threads 2): sized by the first solve that
-    // uses it, so a workspace of a parallel batch, whose queries run on one
-    // thread each, never holds it.
+    // uses it (or, in the constructor's workspace, made at once), so a
+    // workspace of a parallel batch, whose queries run on one thread each,
+    // never holds it.
     internal::Localized_cholesky_solver::Workspace region_star_solve;
     internal::Vertex_marks in_region, seen, wanted;
     std::vector<double> tentative;
