@@ -741,7 +741,7 @@ class Heat_exponential_map
   // `rows`, and the smallest magnitude it is checked against.
   double star_heat_drop_below(const std::vector<int>& rows, const Workspace& ws) const;
   double smallest_star_value(std::size_t width, const std::vector<double>& heat) const;
-  // A second thread starts (about 30 microseconds) only for regions of at
+  // A second thread starts (16 microseconds, up to 60) only for regions of at
   // least this many vertices: a 1% patch of a 26k-vertex mesh (a region of
   // 522, a 0.24 ms query) took 1.12x the time with it.
   static constexpr std::size_t min_region_beside_distance = 1500;
