@@ -748,7 +748,8 @@ int main(int argc, char** argv) {
     if (options.full_sources > 0)
       std::cout << ", heat-full on the first " << options.full_sources;
     if (options.single_precision_factors) std::cout << "; single-precision factors";
-    if (options.query_threads > 1) std::cout << "; heat queries on " << options.query_threads << " threads";
+    if (options.query_threads > 1)
+      std::cout << "; heat queries on " << options.query_threads << " threads";
     std::cout << "\n";
     Benchmark benchmark(options);
     benchmark.run(mesh_jobs(options));

@@ -188,15 +188,16 @@ struct Heat_options {
   /// angles (manual, section 2, step 6) runs on a second thread, for the
   /// whole region, while the calling thread integrates the distance on it
   /// (step 4); the patch then reads its rows. Where no thread can be
-  /// started, the query runs on one. The maps are those of one thread up to round-off
-  /// (1e-15), and a query takes 0.89-0.97x the time at 2-25% patches of
-  /// meshes of 26k-44k vertices, 0.84-0.87x at 1-25% of a 711k-vertex one
-  /// and 0.79x at 0.1% of a 2.85M-vertex one (doc/performance.md); regions
-  /// of fewer than 1,500 vertices stay on one thread. The second thread's
-  /// workspace, another n x 16 doubles, is made with the object (for its
-  /// first query) and by any other query that uses it. For one query at a time, as
-  /// in an interactive tool: `compute_many()` on more than one thread
-  /// already keeps every core busy with a query each, and runs each on one.
+  /// started, the query runs on one. The maps are those of one thread up
+  /// to round-off (1e-15), and a query takes 0.89-0.97x the time at 2-25%
+  /// patches of meshes of 26k-44k vertices, 0.84-0.87x at 1-25% of a
+  /// 711k-vertex one and 0.79x at 0.1% of a 2.85M-vertex one
+  /// (doc/performance.md); regions of fewer than 1,500 vertices stay on one
+  /// thread. The second thread's workspace, another n x 16 doubles, is made
+  /// with the object (for its first query) and by any other query that
+  /// uses it. For one query at a time, as in an interactive tool:
+  /// `compute_many()` on more than one thread already keeps every core busy
+  /// with a query each, and runs each on one.
   int query_threads = 1;
 };
 
@@ -259,7 +260,8 @@ class Heat_exponential_map
     m_workspaces.acquire([this] {
       auto ws = std::make_unique<Workspace>(*this);
       if (m_options.query_threads > 1)
-        ws->region_star_solve = std::move(*m_heat_local.make_workspace());
+        ws->region_star_solve = internal::Localized_cholesky_solver::Workspace(
+            m_heat_local.size(), m_heat_local.number_of_supernodes());
       return ws;
     });
   }

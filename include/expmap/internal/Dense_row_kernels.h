@@ -39,9 +39,8 @@ void subtract_dot(const T* l, const double* y, int begin, int end, double* out) 
 /// [begin, end): four solved rows subtracted in one pass over ys (each of
 /// its rows read and written once per four rows of L).
 template <int W, class T>
-void subtract_four_rows(const T* const (&l)[4],
-                               const std::array<std::array<double, W>, 4>& x, int begin,
-                               int end, double* ys) {
+void subtract_four_rows(const T* const (&l)[4], const std::array<std::array<double, W>, 4>& x,
+                        int begin, int end, double* ys) {
   for (int a = begin; a < end; ++a)
     for (int w = 0; w < W; ++w)
       ys[a * W + w] -=

@@ -128,8 +128,8 @@ void hierarchical_backward(const Hierarchical_diagonal& h, const T* l, double* z
         for (int j = k + 1; j < 4; ++j)
           for (int w = 0; w < W; ++w) zb[(r - j) * W + w] -= lr[r - j] * zb[(r - k) * W + w];
       }
-      subtract_rows<W, T>([&row, r](int k) { return row(r - 3 + k); },
-                                       zb + (r - 3) * W, 4, r - 3, zb);
+      subtract_rows<W, T>([&row, r](int k) { return row(r - 3 + k); }, zb + (r - 3) * W, 4,
+                          r - 3, zb);
     }
     for (; r >= 0; --r) {
       const T* lr = row(r);
