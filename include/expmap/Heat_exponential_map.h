@@ -375,11 +375,15 @@ class Heat_exponential_map
       if (owner.m_separate_distance_heat)
         distance_heat_solve = internal::Localized_cholesky_solver::Workspace(
             owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes());
+      if (owner.has_boundary())
+        boundary_heat_solve = internal::Localized_cholesky_solver::Workspace(
+            owner.m_boundary_heat_local.size(), owner.m_boundary_heat_local.number_of_supernodes());
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());
     }
-    internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve;
+    internal::Localized_cholesky_solver::Workspace heat_solve, distance_heat_solve, poisson_solve,
+        boundary_heat_solve;
     // The second thread's (query_threads 2): sized by the first solve that
     // uses it (or, in the constructor's workspace, made at once), so a
     // workspace of a parallel batch, whose queries run on one thread each,
@@ -400,6 +404,8 @@ class Heat_exponential_map
     std::vector<int> patch;            // the patch vertices, nearest first
     std::vector<internal::Rhs_entry> rhs;
     Star_solve star;                   // the star solve on the patch
+    Star_solve boundary_star;          // its Dirichlet twin, where the region meets a boundary
+    bool meets_boundary = false;       // whether boundary_star holds this query's solve
     Star_solve region_star;            // the star solve of a second thread, on the region
     std::vector<double> heat;          // heat from the source on the candidates
     bool prune = false;                // whether this query's heat solves are pruned
@@ -476,6 +482,7 @@ class Heat_exponential_map
       const internal::Sparse_matrix heat = heat_matrix(m_time_step);
       m_heat_local = factor_locally(heat, "heat", nullptr, m_options.factor_precision);
       if (!m_separate_distance_heat) prepare_pruning(heat);
+      factor_boundary_heat(heat, isolated);
     }
     if (m_separate_distance_heat) {
       const internal::Sparse_matrix distance_heat = heat_matrix(m_distance_time_step);
@@ -513,6 +520,39 @@ class Heat_exponential_map
       compression.single_tolerance =
           std::max(compression.tolerance, single_precision_compression_tolerance);
     m_poisson_local.compress_rows_below(compression);
+  }
+
+  // The heat matrix with the boundary vertices' rows and columns made
+  // identity: the heat with a zero (Dirichlet) boundary condition, beside
+  // the natural (Neumann) one of `heat`. Not built for closed meshes.
+  void factor_boundary_heat(internal::Sparse_matrix heat, std::vector<int> identity_rows) {
+    const auto& m = m_indexed.arrays;
+    m_is_boundary.assign(m.number_of_vertices(), 0);
+    bool any = false;
+    for (std::size_t v = 0; v < m.number_of_vertices(); ++v) {
+      // A vertex has as many neighbours as faces around it inside the
+      // surface, one more per fan that ends on a boundary.
+      const int neighbors = m.neighbor_start[v + 1] - m.neighbor_start[v];
+      const int faces = m.vertex_face_start[v + 1] - m.vertex_face_start[v];
+      if (faces > 0 && neighbors > faces) {
+        m_is_boundary[v] = 1;
+        identity_rows.push_back(static_cast<int>(v));
+        any = true;
+      }
+    }
+    if (!any) {
+      m_is_boundary.clear();
+      return;
+    }
+    internal::make_identity_row(heat, identity_rows);
+    m_boundary_heat_local =
+        factor_locally(heat, "boundary heat", &m_heat_local, m_options.factor_precision);
+  }
+  bool has_boundary() const { return !m_is_boundary.empty(); }
+  bool touches_boundary(const std::vector<int>& vertices) const {
+    return has_boundary() && std::any_of(vertices.begin(), vertices.end(), [&](int v) {
+             return m_is_boundary[static_cast<std::size_t>(v)] != 0;
+           });
   }
 
   // Factors A with the solver model and keeps only the supernodal copy the
@@ -739,6 +779,27 @@ class Heat_exponential_map
                                    const std::vector<int>& rows, Star_solve& out,
                                    internal::Localized_cholesky_solver::Workspace& solver,
                                    const Workspace& ws) const;
+  // The right-hand side of a star solve of `width` columns (see solve_star_heat).
+  void star_right_hand_side(const internal::Star_gradient& star, std::size_t width,
+                            std::vector<internal::Rhs_entry>& rhs) const;
+  // Step 6 on a surface with a boundary: the heat solves carry the natural
+  // (Neumann) boundary condition, under which the heat from v is the free
+  // heat kernel plus its mirror image across the boundary (method of
+  // images). At a source on the boundary the image doubles the gradient's
+  // tangential part and cancels its normal part, so every direction read
+  // there collapses onto the boundary's tangent; near it, the image pulls
+  // the directions towards their mirror images. The heat with a zero
+  // (Dirichlet) boundary is the kernel minus its image: the sum of the two
+  // is twice the free kernel, image-free, wherever the boundary is locally
+  // straight. This solve gives the Dirichlet half on the patch
+  // (ws.boundary_star), which write_result adds to the Neumann star solve.
+  Solve_statistics solve_boundary_star_heat(const internal::Star_gradient& star,
+                                            Workspace& ws) const;
+  // Columns of the Dirichlet star solve: a linear estimator's two and the
+  // heat from s (the Neumann solve reads that from the distance step).
+  std::size_t boundary_star_columns(const internal::Star_gradient& star) const {
+    return is_linear_in_heat(m_angle_estimator) ? 3 : star.vertices.size();
+  }
   // The star solve's pruning threshold (0: none), from the source heat on
   // `rows`, and the smallest magnitude it is checked against.
   double star_heat_drop_below(const std::vector<int>& rows, const Workspace& ws) const;
@@ -772,6 +833,13 @@ class Heat_exponential_map
       star.vertices = internal::ring_neighborhood(
           m_heat_neighbors, s,
           m_angle_estimator == Angle_estimator::heat_quadratic_fit ? 2 : 1);
+      // Next to a boundary the stencil is one-sided, and the fitted
+      // quadratic's gradient at its edge follows the coarse, long fans
+      // boundaries often have (mirrored patches at boundary sources of
+      // lion-head and mask_cone even with the Dirichlet half, see
+      // solve_boundary_star_heat); the one-ring's area-weighted gradient
+      // has no lever arm.
+      if (touches_boundary(star.vertices)) return internal::star_gradient(m_indexed.arrays, s, frame);
       if (auto fitted = internal::quadratic_fit_star_gradient(m_indexed.arrays, std::move(star), frame))
         return *fitted;
     }
@@ -873,6 +941,10 @@ class Heat_exponential_map
   double m_mean_vertex_area = 0;  // the lumped mass's mean: the mesh's area per vertex
   Angle_estimator m_angle_estimator = Angle_estimator::heat_quadratic_fit;  // see angle_estimator()
   internal::Localized_cholesky_solver m_heat_local, m_distance_heat_local, m_poisson_local;
+  // The heat matrix with Dirichlet conditions on the mesh boundary (empty
+  // for closed meshes): see solve_boundary_star_heat.
+  internal::Localized_cholesky_solver m_boundary_heat_local;
+  std::vector<char> m_is_boundary;  // per vertex; empty for closed meshes
   mutable internal::Workspace_pool<Workspace> m_workspaces;
 };
 
@@ -1168,17 +1240,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
   // gradient of the heat from v. A logarithmic one needs the heat from
   // every patch vertex on the star: one column per star vertex.
   const std::size_t width = star_columns(star);
-  out.rhs.clear();
-  if (is_linear_in_heat(m_angle_estimator)) {
-    for (std::size_t c = 0; c < star.vertices.size(); ++c) {
-      out.rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
-      out.rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
-    }
-    if (width == 3) out.rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
-  } else {
-    for (std::size_t c = 0; c < width; ++c)
-      out.rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
-  }
+  star_right_hand_side(star, width, out.rhs);
   out.heat.resize(rows.size() * width);
   const double drop_below = star_heat_drop_below(rows, ws);
   if (drop_below == 0)
@@ -1193,6 +1255,44 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
     stats += m_heat_local.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
                                 out.heat.data(), solver);
   return stats;
+}
+
+template <class TM, class VPM, class S>
+void Heat_exponential_map<TM, VPM, S>::star_right_hand_side(
+    const internal::Star_gradient& star, std::size_t width,
+    std::vector<internal::Rhs_entry>& rhs) const {
+  rhs.clear();
+  if (is_linear_in_heat(m_angle_estimator)) {
+    for (std::size_t c = 0; c < star.vertices.size(); ++c) {
+      rhs.push_back({star.vertices[c], 0, star.along_e1[c]});
+      rhs.push_back({star.vertices[c], 1, star.along_e2[c]});
+    }
+    if (width == 3) rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
+  } else {
+    for (std::size_t c = 0; c < width; ++c)
+      rhs.push_back({star.vertices[c], static_cast<int>(c), 1.0});
+  }
+}
+
+template <class TM, class VPM, class S>
+Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_boundary_star_heat(
+    const internal::Star_gradient& star, Workspace& ws) const {
+  // The star solve's right-hand side on the Dirichlet heat, whose boundary
+  // rows are identity: their entries would only copy themselves into the
+  // boundary's heat, which is zero. A linear estimator also needs the heat
+  // from s (column 2) for the heat at the source.
+  const std::size_t width = boundary_star_columns(star);
+  Star_solve& out = ws.boundary_star;
+  star_right_hand_side(star, width, out.rhs);
+  out.rhs.erase(std::remove_if(out.rhs.begin(), out.rhs.end(),
+                               [&](const internal::Rhs_entry& e) {
+                                 return m_is_boundary[static_cast<std::size_t>(e.row)] != 0;
+                               }),
+                out.rhs.end());
+  out.heat.assign(ws.patch.size() * width, 0.0);
+  if (out.rhs.empty()) return {};
+  return m_boundary_heat_local.solve(out.rhs, static_cast<int>(width), ws.patch.data(),
+                                     ws.patch.size(), out.heat.data(), ws.boundary_heat_solve);
 }
 
 template <class TM, class VPM, class S>
@@ -1363,6 +1463,10 @@ Heat_exponential_map<TM, VPM, S>::compute_by_index(std::size_t source_index, con
         read_star_heat_on_patch(star_columns(star), order, *ws);
       else
         result.statistics += solve_star_heat(star, ws->patch, ws->star, ws->heat_solve, *ws);
+      // Where the region has no boundary vertex, the boundary's image is
+      // at least two patch radii away and its heat negligible.
+      ws->meets_boundary = touches_boundary(ws->region);
+      if (ws->meets_boundary) result.statistics += solve_boundary_star_heat(star, *ws);
       write_result(s, frame, star, order, *ws, result);
       return result;
     }
@@ -1506,6 +1610,8 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
   const bool remove_leak = m_angle_estimator == Angle_estimator::heat_quadratic_fit;
   const internal::Near_source_zone zone = near_source_zone(s, frame.normal);
   std::vector<double> values(star.vertices.size());
+  const std::size_t boundary_width = boundary_star_columns(star);
+  std::vector<double> both(width);  // the Neumann and Dirichlet heat, summed
   // Step 7: the heat directions of the patch vertices (where the blend
   // wants them), then, for the quadratic fit, their cubic leak removed for
   // all of them at once.
@@ -1520,9 +1626,15 @@ void Heat_exponential_map<TM, VPM, S>::write_result(int s, const internal::Tange
     // The heat from v at the source: its own column for a logarithmic
     // estimator, the source heat of the distance step (or, where that has
     // another time, the third column of the star solve) otherwise.
-    const double at_source = !is_linear_in_heat(m_angle_estimator) ? h[0]
-                             : m_separate_distance_heat                     ? h[2]
-                                                                            : ws.region_heat[i];
+    double at_source = !is_linear_in_heat(m_angle_estimator) ? h[0]
+                       : m_separate_distance_heat                     ? h[2]
+                                                                      : ws.region_heat[i];
+    if (ws.meets_boundary) {
+      const double* dirichlet = ws.boundary_star.heat.data() + p * boundary_width;
+      for (std::size_t c = 0; c < width; ++c) both[c] = h[c] + dirichlet[c];
+      at_source = is_linear_in_heat(m_angle_estimator) ? at_source + dirichlet[2] : both[0];
+      h = both.data();
+    }
     if (!(std::abs(at_source) > std::numeric_limits<double>::min()))
       throw Computation_error("heat diffusion underflows at vertex " +
                               std::to_string(m_indexed.arrays.to_original(v)) +

@@ -28,9 +28,12 @@ namespace internal {
 struct Star_gradient {
   std::vector<int> vertices;                  ///< s first, then its neighbours
   std::vector<double> along_e1, along_e2;     ///< one weight per star vertex
-  /// What the weights make of the cubic monomials x^3, x^2 y, x y^2, y^3 of
-  /// the tangent-plane coordinates (a quadratic fit's only leak up to third
-  /// order; zero where unknown). See `remove_cubic_leak()`.
+  /// What the weights make of the quadratic monomials x^2, x y, y^2 of the
+  /// tangent-plane coordinates (zero for a quadratic fit, which is exact
+  /// for them). See `remove_cubic_leak()`.
+  std::array<std::array<double, 2>, 3> quadratic_leak{};
+  /// What the weights make of the cubic monomials x^3, x^2 y, x y^2, y^3
+  /// (zero where unknown). See `remove_cubic_leak()`.
   std::array<std::array<double, 2>, 4> cubic_leak{};
 
   /// Tangent gradient of the function with `values[c]` at `vertices[c]`.
@@ -51,6 +54,45 @@ inline Star_gradient star_of(const Mesh_arrays& m, int s) {
   for (int p = m.neighbor_start[s]; p < m.neighbor_start[s + 1]; ++p)
     g.vertices.push_back(m.neighbor[p]);
   return g;
+}
+
+/// Star vertex c placed in the tangent plane of s in the direction of its
+/// projection, at its distance |p_c - p_s| (a geodesic distance to first
+/// order, which the heat depends on); std::nullopt if a vertex projects
+/// onto s.
+inline std::optional<std::vector<std::array<double, 2>>> tangent_positions(
+    const Mesh_arrays& m, const std::vector<int>& vertices, const Tangent_frame& frame) {
+  const int s = vertices.front();
+  std::vector<std::array<double, 2>> position(vertices.size(), {{0.0, 0.0}});
+  for (std::size_t c = 1; c < vertices.size(); ++c) {
+    const Vector3 d = m.point[vertices[c]] - m.point[s];
+    const double x = dot(d, frame.e1), y = dot(d, frame.e2);
+    const double projected = std::hypot(x, y);
+    if (!(projected > 0)) return std::nullopt;
+    const double length = norm(d);
+    position[c] = {{x * length / projected, y * length / projected}};
+  }
+  return position;
+}
+
+/// Fills `g.quadratic_leak` and `g.cubic_leak`: the weights applied to the
+/// monomials of the star's tangent positions.
+inline void measure_leaks(Star_gradient& g, const std::vector<std::array<double, 2>>& position) {
+  g.quadratic_leak = {};
+  g.cubic_leak = {};
+  for (std::size_t c = 0; c < g.vertices.size(); ++c) {
+    const double x = position[c][0], y = position[c][1];
+    const double quadratic[3] = {x * x, x * y, y * y};
+    const double cubic[4] = {x * x * x, x * x * y, x * y * y, y * y * y};
+    for (int k = 0; k < 3; ++k) {
+      g.quadratic_leak[k][0] += g.along_e1[c] * quadratic[k];
+      g.quadratic_leak[k][1] += g.along_e2[c] * quadratic[k];
+    }
+    for (int k = 0; k < 4; ++k) {
+      g.cubic_leak[k][0] += g.along_e1[c] * cubic[k];
+      g.cubic_leak[k][1] += g.along_e2[c] * cubic[k];
+    }
+  }
 }
 
 inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_frame& frame) {
@@ -75,6 +117,7 @@ inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_fr
       g.along_e2[c] += dot(w, frame.e2);
     }
   }
+  if (const auto position = tangent_positions(m, g.vertices, frame)) measure_leaks(g, *position);
   return g;
 }
 
@@ -114,20 +157,14 @@ constexpr double fit_weight_width = 0.8;
 inline std::optional<Star_gradient> quadratic_fit_star_gradient(
     const Mesh_arrays& m, Star_gradient g, const Tangent_frame& frame,
     double weight_width = fit_weight_width) {
-  const int s = g.vertices.front();
   const Eigen::Index n = static_cast<Eigen::Index>(g.vertices.size());
   if (n < 6) return std::nullopt;
-  std::vector<std::array<double, 2>> position(g.vertices.size(), {{0.0, 0.0}});
+  const auto placed = tangent_positions(m, g.vertices, frame);
+  if (!placed) return std::nullopt;
+  const std::vector<std::array<double, 2>>& position = *placed;
   double scale = 0;
-  for (std::size_t c = 1; c < g.vertices.size(); ++c) {
-    const Vector3 d = m.point[g.vertices[c]] - m.point[s];
-    const double x = dot(d, frame.e1), y = dot(d, frame.e2);
-    const double projected = std::hypot(x, y);
-    if (!(projected > 0)) return std::nullopt;
-    const double length = norm(d);
-    position[c] = {{x * length / projected, y * length / projected}};
-    scale += length;
-  }
+  for (std::size_t c = 1; c < g.vertices.size(); ++c)
+    scale += norm(m.point[g.vertices[c]] - m.point[g.vertices.front()]);
   scale /= static_cast<double>(n - 1);
   // Design matrix in units of the star's mean distance (for conditioning),
   // each row times the square root of its vertex's weight; the weighted
@@ -150,14 +187,8 @@ inline std::optional<Star_gradient> quadratic_fit_star_gradient(
     g.along_e1[c] = inverse(1, c) * root_weight[c] / scale;
     g.along_e2[c] = inverse(2, c) * root_weight[c] / scale;
   }
-  for (Eigen::Index c = 0; c < n; ++c) {
-    const double x = position[c][0], y = position[c][1];
-    const double monomial[4] = {x * x * x, x * x * y, x * y * y, y * y * y};
-    for (int k = 0; k < 4; ++k) {
-      g.cubic_leak[k][0] += g.along_e1[c] * monomial[k];
-      g.cubic_leak[k][1] += g.along_e2[c] * monomial[k];
-    }
-  }
+  measure_leaks(g, position);
+  g.quadratic_leak = {};  // exact for quadratics: what is left is rounding
   return g;
 }
 
@@ -250,6 +281,13 @@ inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* 
           leak_x += coefficient[k] * star.cubic_leak[k][0];
           leak_y += coefficient[k] * star.cubic_leak[k][1];
         }
+        // Coefficients of x^2, x y, y^2 (a leak for the area-weighted
+        // gradient only: a quadratic fit's quadratic_leak is zero).
+        const double quadratic[3] = {0.5 * (x * x + qxx), x * y + qxy, 0.5 * (y * y + qyy)};
+        for (int k = 0; k < 3; ++k) {
+          leak_x += quadratic[k] * star.quadratic_leak[k][0];
+          leak_y += quadratic[k] * star.quadratic_leak[k][1];
+        }
         const double next_x = fitted_x[l] - leak_x, next_y = fitted_y[l] - leak_y;
         // Only the direction is used: it has settled when a step turns it
         // by less than leak_settled_turn.
@@ -289,7 +327,10 @@ inline void remove_cubic_leak(const Star_gradient& star, std::array<double, 2>* 
 /// + b n n^T with n = g / |g|, a = -(1 / sqrt(t) + 1 / (2 r)) / r and
 /// b = 1 / (2 r^2). A quadratic fit of h is exact up to second order; its
 /// response to the model's cubic Taylor terms, (g.x)^3 / 6 + (g.x) x^T Q x / 2,
-/// follows from `star.cubic_leak` and is subtracted, a fixed point in g
+/// follows from `star.cubic_leak` and is subtracted (for the area-weighted
+/// gradient of a one-sided star next to a boundary, the response to the
+/// quadratic terms x^T (Q + g g^T) x / 2 too, from `star.quadratic_leak`),
+/// a fixed point in g
 /// approached in at most `max_leak_steps` steps (where the last one still
 /// turns the direction by more than `leak_swinging_turn`, the fitted
 /// gradient is returned unchanged). This is what the logarithmic fit achieves with one
