@@ -387,8 +387,8 @@ class Benchmark {
                 << "), tree heights heat " << st.heat_tree_height << " / Poisson "
                 << st.poisson_tree_height << ", factor entries " << heat->factor_nonzeros()
                 << ", Poisson supernodes with rows below in low-rank form "
-                << heat->poisson_compressed_supernodes() << " and hierarchical diagonal blocks "
-                << heat->poisson_hierarchical_supernodes() << ", t = " << fmt(heat->time_step(), 4) << "\n";
+                << heat->poisson_compressed_supernodes() << ", t = " << fmt(heat->time_step(), 4)
+                << "\n";
     }
     m_mesh_statistics.push_back(st);
     if (m_stats.is_open()) {

@@ -8,6 +8,8 @@ find_dependency(CGAL)
 find_dependency(Eigen3 3.3 NO_MODULE)
 find_dependency(CHOLMOD)
 find_dependency(METIS)
+# The truncated SVDs of the Poisson factor's rows below (dgesdd).
+find_dependency(LAPACK)
 find_dependency(Boost 1.66)
 # compute_many() runs queries on std::thread.
 find_dependency(Threads)

@@ -166,18 +166,6 @@ struct Heat_options {
   /// single precision alone at 0.1% / 1% patches of the 2.85M-vertex mesh,
   /// the maps moved by at most 6.6e-8 of the radius.
   ///
-  /// Before that, the diagonal blocks of the double-precision Poisson
-  /// separators with at least 256 columns are kept in hierarchical form at
-  /// the same tolerance: the columns ordered along the separator, the block
-  /// refactored in that order, and its off-diagonal halves, recursively,
-  /// as truncated singular value decompositions (where a solve then reads
-  /// at most 0.7 of the triangle). At 0.1% patches of the 2.85M-vertex mesh
-  /// a query reads 14% fewer entries, in 0.96x the time (the top separators
-  /// stay in the cache between queries, where the dense kernels are
-  /// fastest); the maps moved by at most 2.6e-14 of the radius
-  /// (doc/paper_scale.md). The benchmark's meshes of 26k-45k vertices have
-  /// no such blocks, its 711k-vertex one 5, the 2.85M-vertex one 31.
-  ///
   /// 0 keeps every block dense. At most 1e-10.
   double poisson_compression_tolerance = 1e-14;
   /// How the direction of the geodesic is read off the heat.
@@ -306,11 +294,6 @@ class Heat_exponential_map
   /// form (`Heat_options::poisson_compression_tolerance`).
   std::size_t poisson_compressed_supernodes() const {
     return m_poisson_local.number_of_compressed_supernodes();
-  }
-  /// Supernodes of the Poisson factor whose diagonal block is kept in
-  /// hierarchical form (`Heat_options::poisson_compression_tolerance`).
-  std::size_t poisson_hierarchical_supernodes() const {
-    return m_poisson_local.number_of_hierarchical_supernodes();
   }
   /// Stored entries of all factors (heat, Poisson and, if separate, the
   /// distance heat), in the dense supernodal form the queries traverse.
@@ -509,11 +492,6 @@ class Heat_exponential_map
     internal::make_identity_row(L, identity_rows);
     m_poisson_local =
         factor_locally(L, "Poisson", &m_heat_local, m_options.factor_precision);
-    // The top separators' diagonal blocks first: their rotation goes into
-    // the rows below, which are compressed after it.
-    internal::Diagonal_compression diagonal;
-    diagonal.tolerance = m_options.poisson_compression_tolerance;
-    m_poisson_local.compress_diagonal_blocks(diagonal, m_indexed.arrays.point);
     internal::Rows_below_compression compression;
     compression.tolerance = m_options.poisson_compression_tolerance;
     if (compression.tolerance > 0)

@@ -12,9 +12,8 @@ namespace internal {
 
 // The dense kernels the triangular solves are made of, on row-major blocks
 // of W right-hand sides: a row's dot product with the solved values, and
-// four solved rows subtracted from the others at once. Shared by the
-// supernodes' dense blocks (Localized_cholesky_solver) and the hierarchical
-// diagonal blocks (Hierarchical_diagonal).
+// four solved rows subtracted from the others at once, on the supernodes'
+// dense blocks (Localized_cholesky_solver).
 
 /// out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
 /// independent partial sums: without them every multiply-add waits for the

@@ -6,7 +6,6 @@
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Hierarchical_diagonal_compression.h>
 #include <expmap/internal/Dense_row_kernels.h>
 #include <expmap/internal/Huge_page_allocator.h>
 #include <expmap/internal/Low_rank_rows_below.h>
@@ -181,22 +180,6 @@ class Localized_cholesky_solver {
 
   /// Number of supernodes whose rows below are kept in low-rank form.
   std::size_t number_of_compressed_supernodes() const { return m_compressed_supernodes; }
-
-  /// Keeps the diagonal blocks of the factor's large separators in
-  /// hierarchical form as `compression` asks
-  /// (`internal::compress_diagonal_blocks`; `position[row]`: where row `row`
-  /// of A lies), on `threads` threads (0: the hardware's count). Part of the
-  /// setup, before `compress_rows_below()`: not to be called while the
-  /// solver is in use.
-  /// \returns the number of supernodes put in that form by this call.
-  std::size_t compress_diagonal_blocks(const Diagonal_compression& compression,
-                                       const std::vector<Vector3>& position,
-                                       unsigned threads = 0) {
-    return internal::compress_diagonal_blocks(m_factor, compression, position, threads);
-  }
-
-  /// Number of supernodes whose diagonal block is kept in hierarchical form.
-  std::size_t number_of_hierarchical_supernodes() const { return m_factor.hierarchical.size(); }
 
   /// A workspace sized for this factor.
   std::unique_ptr<Workspace> make_workspace() const {
@@ -595,10 +578,7 @@ class Localized_cholesky_solver {
       int column = to_pivot(*start);
       int k = F.supernode_of_column[column];
       while (true) {
-        // A diagonal block in hierarchical form mixes its columns: it is
-        // solved whole, entered at its first column.
-        const int offset =
-            F.supernode[k].hierarchical >= 0 ? 0 : column - F.supernode[k].first_column;
+        const int offset = column - F.supernode[k].first_column;
         if (stamp[k] == s) {  // known: only its entry may move down
           entry[k] = std::min(entry[k], offset);
           break;
@@ -870,17 +850,12 @@ class Localized_cholesky_solver {
   void forward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
                          double* ys, double* y) const {
     const auto& F = m_factor;
-    if (sn.hierarchical >= 0) {
-      forward_hierarchical<W>(entries, sn, ys);
-      first = 0;
-    } else {
-      const T* diagonal = entries + sn.diagonal;
-      for (int r = first; r < sn.ncol; ++r) {
-        double* yr = ys + r * W;
-        subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
-        const double inverse = m_inverse_diagonal[sn.first_column + r];
-        for (int w = 0; w < W; ++w) yr[w] *= inverse;
-      }
+    const T* diagonal = entries + sn.diagonal;
+    for (int r = first; r < sn.ncol; ++r) {
+      double* yr = ys + r * W;
+      subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
+      const double inverse = m_inverse_diagonal[sn.first_column + r];
+      for (int w = 0; w < W; ++w) yr[w] *= inverse;
     }
     const T* below = entries + sn.below;
     const int* below_rows = F.row_index.data() + sn.below_rows;
@@ -891,45 +866,6 @@ class Localized_cholesky_solver {
     for (int t = 0; t < sn.nbelow; ++t)
       subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
                       y + static_cast<std::size_t>(below_rows[t]) * W);
-  }
-
-  // Per-thread scratch of the hierarchical diagonal blocks: a supernode's
-  // rows in the block's order (ncol x W).
-  static double* hierarchical_rows(std::size_t size) {
-    thread_local std::vector<double> scratch;
-    if (scratch.size() < size) scratch.resize(size);
-    return scratch.data();
-  }
-
-  // The rotated forward values y' = L'^-1 P b of a supernode whose diagonal
-  // block is in hierarchical form (Hierarchical_diagonal), from its rows of
-  // b in `ys`, written back to `ys` in the block's order: the order the
-  // rotated rows below read them in.
-  template <int W, class T>
-  void forward_hierarchical(const T* entries, const Supernodal_factor::Supernode& sn,
-                            double* ys) const {
-    const auto& h = m_factor.hierarchical[static_cast<std::size_t>(sn.hierarchical)];
-    const std::size_t size = static_cast<std::size_t>(sn.ncol) * W;
-    double* z = hierarchical_rows(size);
-    for (int a = 0; a < sn.ncol; ++a)
-      for (int w = 0; w < W; ++w) z[a * W + w] = ys[h.order[static_cast<std::size_t>(a)] * W + w];
-    hierarchical_forward<W>(h, entries + sn.diagonal, z);
-    std::copy(z, z + size, ys);
-  }
-
-  // The back substitution's end for such a supernode: x = P^T L'^-T ys,
-  // ys holding y' less the rows below' part, in the block's order; x is
-  // written to `ys` in the columns' own order.
-  template <int W, class T>
-  void backward_hierarchical(const T* entries, const Supernodal_factor::Supernode& sn,
-                             double* ys) const {
-    const auto& h = m_factor.hierarchical[static_cast<std::size_t>(sn.hierarchical)];
-    const std::size_t size = static_cast<std::size_t>(sn.ncol) * W;
-    double* z = hierarchical_rows(size);
-    std::copy(ys, ys + size, z);
-    hierarchical_backward<W>(h, entries + sn.diagonal, z);
-    for (int a = 0; a < sn.ncol; ++a)
-      for (int w = 0; w < W; ++w) ys[h.order[static_cast<std::size_t>(a)] * W + w] = z[a * W + w];
   }
 
   // The forward update of the rows below kept as U V^T (rank r): y[rows[t]]
@@ -988,10 +924,6 @@ class Localized_cholesky_solver {
   void backward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
                           double* ys, const double* y, int end = -1) const {
     if (end < 0) end = sn.ncol;
-    if (sn.hierarchical >= 0) {  // entered at its first column, solved whole (reach)
-      backward_below<W>(entries, sn, 0, ys, y, sn.ncol);
-      return backward_hierarchical<W>(entries, sn, ys);
-    }
     backward_below<W>(entries, sn, first, ys, y, end);
     const T* diagonal = entries + sn.diagonal;
     for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
@@ -1046,10 +978,6 @@ class Localized_cholesky_solver {
   std::size_t forward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
                                        int first, double* ys, double* y, double drop_below,
                                        std::vector<int>& runs) const {
-    if (sn.hierarchical >= 0) {  // rotated values: nothing to prune by
-      forward_supernode<W>(entries, sn, first, ys, y);
-      return entries_of(sn, first);
-    }
     const auto& F = m_factor;
     const T* diagonal = entries + sn.diagonal;
     runs.clear();
@@ -1097,10 +1025,6 @@ class Localized_cholesky_solver {
   std::size_t backward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
                                         int first, double* ys, const double* y,
                                         double drop_below, std::vector<int>& kept) const {
-    if (sn.hierarchical >= 0) {
-      backward_supernode<W>(entries, sn, first, ys, y);
-      return entries_of(sn, first);
-    }
     const auto& F = m_factor;
     const int* below_rows = F.row_index.data() + sn.below_rows;
     kept.clear();
@@ -1245,10 +1169,7 @@ class Localized_cholesky_solver {
                                 int end = -1) const {
     if (end < 0) end = sn.ncol;
     const std::size_t c = static_cast<std::size_t>(end - first);
-    const std::size_t diagonal =
-        sn.hierarchical >= 0
-            ? m_factor.hierarchical[static_cast<std::size_t>(sn.hierarchical)].entries
-            : c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
+    const std::size_t diagonal = c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
     const std::size_t nbelow = static_cast<std::size_t>(sn.nbelow);
     if (sn.rank >= 0) return diagonal + (nbelow + c) * static_cast<std::size_t>(sn.rank);
     return diagonal + nbelow * c;

@@ -3,11 +3,9 @@
 #ifndef EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
 #define EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
 
+#include <expmap/internal/Lapack.h>
 #include <expmap/internal/Parallel_loop.h>
 #include <expmap/internal/Supernodal_factor.h>
-
-#include <Eigen/Core>
-#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cstddef>
@@ -17,6 +15,37 @@
 
 namespace expmap {
 namespace internal {
+
+/// The singular value decomposition B = U S V^T of the row-major `rows` x
+/// `columns` block B, thin (k = min(rows, columns) singular vectors), by
+/// LAPACK's dgesdd: the block's entries, read as column-major, are B^T = V S
+/// U^T, so dgesdd's left vectors are V and its right ones U^T.
+struct Thin_svd {
+  std::vector<double> sigma;  // k, descending
+  std::vector<double> v;      // V column-major: V(q, j) at v[q + j * columns]
+  std::vector<double> ut;     // U^T column-major: U(t, j) at ut[j + t * k]
+  /// \returns false if LAPACK did not converge.
+  template <class T>
+  bool compute(const T* block, int rows, int columns) {
+    const int k = std::min(rows, columns);
+    std::vector<double> a(block, block + static_cast<std::size_t>(rows) * columns);
+    sigma.resize(static_cast<std::size_t>(k));
+    v.resize(static_cast<std::size_t>(columns) * k);
+    ut.resize(static_cast<std::size_t>(k) * rows);
+    std::vector<int> iwork(8 * static_cast<std::size_t>(k));
+    const char jobz = 'S';
+    int info = 0, lwork = -1;
+    double optimal_lwork = 0;
+    dgesdd_(&jobz, &columns, &rows, a.data(), &columns, sigma.data(), v.data(), &columns,
+            ut.data(), &k, &optimal_lwork, &lwork, iwork.data(), &info, 1);
+    if (info != 0) return false;
+    lwork = static_cast<int>(optimal_lwork);
+    std::vector<double> work(static_cast<std::size_t>(lwork));
+    dgesdd_(&jobz, &columns, &rows, a.data(), &columns, sigma.data(), v.data(), &columns,
+            ut.data(), &k, work.data(), &lwork, iwork.data(), &info, 1);
+    return info == 0;
+  }
+};
 
 /// Which supernodes' rows below are kept as a truncated singular value
 /// decomposition, and how closely.
@@ -82,14 +111,14 @@ inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_co
   // One block, its entries of type T at `below`: true if it was compressed.
   auto compress = [&c](Supernodal_factor::Supernode& sn, auto* below, double tolerance) {
     using T = std::remove_pointer_t<decltype(below)>;
-    using Matrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-    const Eigen::Map<const Matrix> block(below, sn.nbelow, sn.ncol);
-    const Eigen::BDCSVD<Eigen::MatrixXd> svd(block.template cast<double>(),
-                                             Eigen::ComputeThinU | Eigen::ComputeThinV);
-    const auto& sigma = svd.singularValues();
-    if (sigma.size() == 0 || !(sigma[0] > 0)) return false;
+    Thin_svd svd;
+    // Not converged: the block stays dense, exact as it is.
+    if (!svd.compute(below, sn.nbelow, sn.ncol)) return false;
+    const std::vector<double>& sigma = svd.sigma;
+    const int k = static_cast<int>(sigma.size());
+    if (k == 0 || !(sigma[0] > 0)) return false;
     int r = 0;
-    while (r < sigma.size() && sigma[r] > tolerance * sigma[0]) ++r;
+    while (r < k && sigma[r] > tolerance * sigma[0]) ++r;
     const double entries = static_cast<double>(sn.nbelow) * sn.ncol;
     if (static_cast<double>(r) * (sn.nbelow + sn.ncol) > c.max_fraction * entries) return false;
     // The block has been copied into the decomposition: its place is free.
@@ -97,10 +126,12 @@ inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_co
     T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
     for (int t = 0; t < sn.nbelow; ++t)
       for (int j = 0; j < r; ++j)
-        U[static_cast<std::size_t>(t) * r + j] = static_cast<T>(svd.matrixU()(t, j) * sigma[j]);
+        U[static_cast<std::size_t>(t) * r + j] =
+            static_cast<T>(svd.ut[static_cast<std::size_t>(t) * k + j] * sigma[j]);
     for (int q = 0; q < sn.ncol; ++q)
       for (int j = 0; j < r; ++j)
-        V[static_cast<std::size_t>(q) * r + j] = static_cast<T>(svd.matrixV()(q, j));
+        V[static_cast<std::size_t>(q) * r + j] =
+            static_cast<T>(svd.v[static_cast<std::size_t>(j) * sn.ncol + q]);
     sn.rank = r;
     return true;
   };

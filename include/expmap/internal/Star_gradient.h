@@ -4,15 +4,15 @@
 #define EXPMAP_INTERNAL_STAR_GRADIENT_H
 
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Pivoted_householder_qr.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Vector3.h>
-
-#include <Eigen/Dense>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace expmap {
@@ -157,7 +157,7 @@ constexpr double fit_weight_width = 0.8;
 inline std::optional<Star_gradient> quadratic_fit_star_gradient(
     const Mesh_arrays& m, Star_gradient g, const Tangent_frame& frame,
     double weight_width = fit_weight_width) {
-  const Eigen::Index n = static_cast<Eigen::Index>(g.vertices.size());
+  const int n = static_cast<int>(g.vertices.size());
   if (n < 6) return std::nullopt;
   const auto placed = tangent_positions(m, g.vertices, frame);
   if (!placed) return std::nullopt;
@@ -169,23 +169,26 @@ inline std::optional<Star_gradient> quadratic_fit_star_gradient(
   // Design matrix in units of the star's mean distance (for conditioning),
   // each row times the square root of its vertex's weight; the weighted
   // least-squares solution is then the pseudo-inverse times the weighted
-  // values.
-  Eigen::MatrixXd X(n, 6);
+  // values. Its rows 1 and 2 are the fit's gradient.
+  constexpr int monomials = 6;
+  std::vector<double> X(static_cast<std::size_t>(n) * monomials);  // column-major
   std::vector<double> root_weight(g.vertices.size());
-  for (Eigen::Index c = 0; c < n; ++c) {
+  for (int c = 0; c < n; ++c) {
     const double x = position[c][0] / scale, y = position[c][1] / scale;
     root_weight[c] = std::exp(-(x * x + y * y) / (4 * weight_width * weight_width));
-    X.row(c) << 1.0, x, y, x * x, x * y, y * y;
-    X.row(c) *= root_weight[c];
+    const double row[monomials] = {1.0, x, y, x * x, x * y, y * y};
+    for (int k = 0; k < monomials; ++k)
+      X[static_cast<std::size_t>(k) * n + c] = row[k] * root_weight[c];
   }
-  const Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> fit(X);
-  if (fit.rank() < 6) return std::nullopt;
-  const Eigen::MatrixXd inverse = fit.pseudoInverse();  // 6 x n
+  const Pivoted_householder_qr<monomials> fit(std::move(X), n);
+  if (!fit.full_rank()) return std::nullopt;
   g.along_e1.resize(g.vertices.size());
   g.along_e2.resize(g.vertices.size());
-  for (Eigen::Index c = 0; c < n; ++c) {
-    g.along_e1[c] = inverse(1, c) * root_weight[c] / scale;
-    g.along_e2[c] = inverse(2, c) * root_weight[c] / scale;
+  fit.pseudo_inverse_row(1, g.along_e1.data());
+  fit.pseudo_inverse_row(2, g.along_e2.data());
+  for (int c = 0; c < n; ++c) {
+    g.along_e1[c] *= root_weight[c] / scale;
+    g.along_e2[c] *= root_weight[c] / scale;
   }
   measure_leaks(g, position);
   g.quadratic_leak = {};  // exact for quadratics: what is left is rounding

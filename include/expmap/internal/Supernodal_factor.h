@@ -5,7 +5,6 @@
 
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
-#include <expmap/internal/Hierarchical_diagonal.h>
 #include <expmap/internal/Huge_page_allocator.h>
 
 #include <algorithm>
@@ -54,11 +53,6 @@ struct Supernodal_factor {
     // -1: the rows below are dense; else they are kept as U V^T of this
     // rank in the block's place (compress_rows_below, Low_rank_rows_below.h).
     int rank = -1;
-    // -1: the diagonal block is a dense triangle; else it is kept in
-    // hierarchical form, `hierarchical[this]` (compress_diagonal_blocks,
-    // Hierarchical_diagonal_compression.h), and the rows below are rotated
-    // to match it.
-    int hierarchical = -1;
   };
 
   int size = 0;
@@ -69,7 +63,6 @@ struct Supernodal_factor {
   // The entries, of each supernode in one of the two arrays.
   std::vector<double, Huge_page_allocator<double>> value;
   std::vector<float, Huge_page_allocator<float>> single_value;
-  std::vector<Hierarchical_diagonal> hierarchical;  // the diagonal blocks in that form
   std::vector<int> permutation;          // pivot -> row of A
   std::vector<int> inverse_permutation;  // row of A -> pivot
   Factor_precision precision = Factor_precision::double_precision;  // as asked for
