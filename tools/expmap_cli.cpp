@@ -729,10 +729,11 @@ int main(int argc, char** argv) {
     return fail(e.what(), 2);
   } catch (const std::bad_alloc&) {
     return fail("out of memory (try a smaller mesh or patch)", 1);
-  } catch (const std::exception& e) {
-    // expmap::Invalid_input / Computation_error and CGAL's exceptions: their
-    // messages already say what was wrong.
+  } catch (const Runtime_error& e) {
     return fail(e.what(), 1);
+  } catch (const std::exception& e) {
+    // The library's own messages as they are, any other in its words.
+    return fail(expmap::internal::user_message(e), 1);
   } catch (...) {
     return fail("unexpected internal error", 1);
   }

@@ -164,9 +164,10 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
                    "Geodesic polar coordinates around vertex ``source`` (0-based row of\n"
                    "the vertex array). ") +
        patch_doc +
-       "\nRaises ValueError for invalid input (a source out of range or isolated, a\n"
-       "bad patch) and RuntimeError when the computation fails (e.g. heat\n"
-       "underflow: choose a larger time factor or a smaller patch).")
+       "\nRaises ValueError (InvalidInput) for invalid input (a source out of range\n"
+       "or isolated, a bad patch) and RuntimeError (ComputationError) when the\n"
+       "computation fails (e.g. heat underflow: choose a larger time factor or a\n"
+       "smaller patch).")
           .c_str());
   c.def(
       "compute_many",
@@ -350,8 +351,10 @@ PYBIND11_MODULE(_expmap, m) {
 
   py::register_exception<expmap::Invalid_input>(m, "InvalidInput", PyExc_ValueError)
       .attr("__doc__") = "Input the library cannot use (expmap::Invalid_input); a ValueError.";
-  py::register_exception<expmap::Computation_error>(m, "ComputationError", PyExc_RuntimeError)
-      .attr("__doc__") =
+  static py::exception<expmap::Computation_error>& computation_error =
+      py::register_exception<expmap::Computation_error>(m, "ComputationError",
+                                                        PyExc_RuntimeError);
+  computation_error.attr("__doc__") =
       "A computation that failed on valid input (expmap::Computation_error), e.g. heat\n"
       "underflow; a RuntimeError.";
   py::register_exception<Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
@@ -443,6 +446,29 @@ PYBIND11_MODULE(_expmap, m) {
       [](py::handle path_object, bool triangulate, bool repair, bool return_file_index) {
         // str, bytes or any os.PathLike (pathlib.Path).
         const std::string path =
+  // Any other C++ exception from this module (a dependency's or the standard
+  // library's, whose text speaks of their internals) is a ComputationError
+  // in the library's words; ours, pybind11's and Python's own pass on to the
+  // translators above.
+  py::register_local_exception_translator([](std::exception_ptr thrown) {
+    try {
+      std::rethrow_exception(thrown);
+    } catch (const expmap::Invalid_input&) {
+      throw;
+    } catch (const expmap::Computation_error&) {
+      throw;
+    } catch (const Mesh_file_error&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw;  // MemoryError
+    } catch (const py::builtin_exception&) {
+      throw;
+    } catch (const py::error_already_set&) {
+      throw;
+    } catch (const std::exception& e) {
+      computation_error(expmap::internal::user_message(e).c_str());
+    }
+  });
             py::module_::import("os").attr("fsdecode")(path_object).cast<std::string>();
         if (!std::ifstream(path))
           throw Mesh_file_error("cannot open mesh file '" + path + "' (missing or not readable)");
