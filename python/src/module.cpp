@@ -397,9 +397,10 @@ void bind_heat(py::module_& m) {
         "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
         "    (0, 0) for the paper's pure heat coordinates.\n"
         "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
-        "    runs beside the distance's (the same maps, 0.79-0.97x the time on\n"
-        "    patches of 750+ vertices). compute_many on more than one thread runs a\n"
-        "    source per thread, each on one.\n\n"
+        "    runs beside the distance's (the same maps up to round-off, 0.79-0.97x\n"
+        "    the time on patches of 750+ vertices). compute_many on more than one\n"
+        "    thread runs a source per thread, each on one, and gives the same maps\n"
+        "    bit for bit on any number of threads.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
@@ -443,7 +444,6 @@ PYBIND11_MODULE(_expmap, m) {
       "underflow; a RuntimeError.";
   py::register_exception<Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
       .attr("__doc__") = "A mesh file that is missing or cannot be opened; an OSError.";
-
   // Any other C++ exception from this module (a dependency's or the standard
   // library's, whose text speaks of their internals) is a ComputationError
   // in the library's words; ours, pybind11's and Python's own pass on to the
@@ -467,6 +467,7 @@ PYBIND11_MODULE(_expmap, m) {
       computation_error(expmap::internal::user_message(e).c_str());
     }
   });
+
   // The enums are listed once, here; Python code reads them from
   // __members__, never from a list of its own.
   py::enum_<expmap::Laplacian_mode>(m, "LaplacianMode",
