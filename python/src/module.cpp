@@ -583,10 +583,12 @@ PYBIND11_MODULE(_expmap, m) {
       "Reads a .off, .obj, .ply or .stl mesh with the library's reader\n"
       "(expmap::IO::read_triangle_mesh, as the command-line program does): vertices\n"
       "float64 n x 3, faces int64 m x 3. Faces that are not an oriented 2-manifold\n"
-      "are read as a polygon soup and oriented; polygons are split into triangles\n"
-      "(no vertex added) unless triangulate is False; repair removes degenerate\n"
-      "faces and needles, and with them vertices, so vertex i is then file vertex\n"
-      "file_index[i]. Each repair is reported as a UserWarning.\n"
+      "are read as a polygon soup and oriented; a vertex where sheets meet is\n"
+      "split into one copy per sheet, the copies after the file's vertices;\n"
+      "polygons are split into triangles (no vertex added) unless triangulate is\n"
+      "False; repair removes degenerate faces and needles, and with them\n"
+      "vertices. Vertex i is file vertex file_index[i] (the identity unless a\n"
+      "vertex was split or removed). Each repair is reported as a UserWarning.\n"
       "Raises OSError (MeshFileError) if the file cannot be opened and ValueError\n"
       "if it is malformed or (triangulate=False) has a face that is not a triangle.");
 
