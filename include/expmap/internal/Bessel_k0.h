@@ -14,7 +14,7 @@ namespace internal {
 /// underflows (x above about 700) and at +infinity, NaN for x < 0 or NaN.
 ///
 /// Own code rather than `std::cyl_bessel_k`: libc++ does not provide the
-/// special functions, and libstdc++'s throws `std::domain_error` for large
+/// special functions, and libstdc++'s throws `std::runtime_error` for large
 /// arguments instead of underflowing. The heat method only needs K0 for a
 /// threshold (the heat at a distance), so the classic approximations of
 /// Abramowitz & Stegun (1964) are accurate enough:
