@@ -365,8 +365,9 @@ std::string map_options_help() {
        "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
        "                       2 the angles' solve runs beside the distance's,\n"
        "                       0.79-0.97x the time on patches of 750+ vertices, the\n"
-       "                       same map (default: 1; expmap batch on more than one\n"
-       "                       thread gives each a source and each map one thread)\n"
+       "                       same map up to round-off (default: 1; expmap batch on\n"
+       "                       more than one thread gives each a source and each map\n"
+       "                       one thread)\n"
        "  --angles A           heat only: how the angle is read off the heat at the\n"
        "                       source's one-ring: heat-quadratic-fit (least-squares\n"
        "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
@@ -729,10 +730,11 @@ int main(int argc, char** argv) {
     return fail(e.what(), 2);
   } catch (const std::bad_alloc&) {
     return fail("out of memory (try a smaller mesh or patch)", 1);
-  } catch (const std::exception& e) {
-    // expmap::Invalid_input / Computation_error and CGAL's exceptions: their
-    // messages already say what was wrong.
+  } catch (const Runtime_error& e) {
     return fail(e.what(), 1);
+  } catch (const std::exception& e) {
+    // The library's own messages as they are, any other in its words.
+    return fail(expmap::internal::user_message(e), 1);
   } catch (...) {
     return fail("unexpected internal error", 1);
   }

@@ -7,6 +7,7 @@
 /// Many queries at once on all cores: the options and the result of
 /// `compute_many()`, which every method class has.
 
+#include <expmap/Errors.h>
 #include <expmap/Local_map.h>
 #include <expmap/internal/Parallel_loop.h>
 
@@ -85,10 +86,8 @@ Batch_result<VertexDescriptor> run_batch(const std::vector<std::size_t>& sources
                 [&](std::size_t i) {
                   try {
                     result.maps[i] = query(sources[i]);
-                  } catch (const std::bad_alloc&) {
-                    result.errors[i] = batch_error_message(sources[i], "out of memory");
                   } catch (const std::exception& e) {
-                    result.errors[i] = batch_error_message(sources[i], e.what());
+                    result.errors[i] = batch_error_message(sources[i], user_message(e));
                   } catch (...) {
                     result.errors[i] = batch_error_message(sources[i], "unknown error");
                   }

@@ -15,6 +15,7 @@
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
+#include <expmap/internal/Bessel_k0.h>
 #include <expmap/internal/Boundary_loops.h>
 #include <expmap/internal/Cotan_operators.h>
 #include <expmap/internal/Faces_by_smallest_corner.h>
@@ -1484,7 +1485,7 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_region_largest_first(
 template <class TM, class VPM, class S>
 double Heat_exponential_map<TM, VPM, S>::heat_at_distance(double d) const {
   const double t = m_distance_time_step;
-  const double kernel = std::cyl_bessel_k(0.0, d / std::sqrt(t)) / (2 * M_PI * t);
+  const double kernel = internal::bessel_k0(d / std::sqrt(t)) / (2 * M_PI * t);
   return std::isnormal(kernel) ? kernel : std::numeric_limits<double>::min();
 }
 

@@ -27,13 +27,20 @@ py::array_t<T> array_of(const std::vector<T>& values) {
   return array;
 }
 
+/// The caller's row of mesh vertex `v`: `original[v]`, or `v` if `original`
+/// is empty (nothing was split).
+inline std::int64_t row_of(const std::vector<std::size_t>& original, std::size_t v) {
+  return static_cast<std::int64_t>(original.empty() ? v : original[v]);
+}
+
 inline Real_array vector3(const std::array<double, 3>& v) {
   Real_array array(3);
   std::copy(v.begin(), v.end(), array.mutable_data());
   return array;
 }
 
-/// One local map: the patch vertices nearest first and their coordinates.
+/// One local map: the patch vertices nearest first and their coordinates,
+/// each vertex as the caller's row (`original`, see `Arrays_mesh`).
 struct Map_arrays {
   std::int64_t source = 0;
   Index_array vertices;
@@ -41,8 +48,8 @@ struct Map_arrays {
   Real_array normal, axis_u, axis_v;
   expmap::Solve_statistics statistics;  // the heat query's work; zeros for the other methods
 
-  explicit Map_arrays(const Map& map)
-      : source(static_cast<std::int64_t>(map.source)),
+  Map_arrays(const Map& map, const std::vector<std::size_t>& original)
+      : source(row_of(original, map.source)),
         vertices(static_cast<py::ssize_t>(map.size())),
         r(array_of(map.distance)),
         theta(array_of(map.angle)),
@@ -51,7 +58,8 @@ struct Map_arrays {
         axis_u(vector3(map.axis_u)),
         axis_v(vector3(map.axis_v)),
         statistics(map.statistics) {
-    std::copy(map.indices.begin(), map.indices.end(), vertices.mutable_data());
+    std::int64_t* vertex = vertices.mutable_data();
+    for (std::size_t i = 0; i < map.size(); ++i) vertex[i] = row_of(original, map.indices[i]);
     double* p = uv.mutable_data();
     for (std::size_t i = 0; i < map.size(); ++i) {
       const auto w = map.uv(i);
@@ -62,14 +70,14 @@ struct Map_arrays {
 
 /// Many maps, concatenated: rows offsets[i] to offsets[i + 1] belong to
 /// sources[i]; a source whose query failed has no rows and a non-empty
-/// errors[i].
+/// errors[i]. Vertices are the caller's rows, as in `Map_arrays`.
 struct Batch_arrays {
   Index_array sources, offsets, vertex;
   Real_array r, theta, u, v;
   std::vector<std::string> errors;
 
   Batch_arrays(const std::vector<std::size_t>& source_indices, const std::vector<Map>& maps,
-               std::vector<std::string> messages)
+               std::vector<std::string> messages, const std::vector<std::size_t>& original)
       : sources(static_cast<py::ssize_t>(source_indices.size())),
         offsets(static_cast<py::ssize_t>(source_indices.size() + 1)),
         errors(std::move(messages)) {
@@ -88,7 +96,7 @@ struct Batch_arrays {
       for (std::size_t k = 0; k < maps[i].size(); ++k) {
         const std::size_t row = static_cast<std::size_t>(offset[i]) + k;
         const auto w = maps[i].uv(k);
-        vertex_out[row] = static_cast<std::int64_t>(maps[i].indices[k]);
+        vertex_out[row] = row_of(original, maps[i].indices[k]);
         r_out[row] = maps[i].distance[k], theta_out[row] = maps[i].angle[k];
         u_out[row] = w[0], v_out[row] = w[1];
       }

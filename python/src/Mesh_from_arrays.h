@@ -9,6 +9,7 @@
 // off, so a bad index would be a crash, not an exception.
 
 #include <expmap/Errors.h>
+#include <expmap/IO/read_triangle_mesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -19,6 +20,8 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace expmap_python {
 
@@ -65,10 +68,30 @@ inline Index_array checked_indices(py::handle object, const char* name, std::siz
   return indices;
 }
 
-/// The mesh with vertex i at row i of `vertices` (float n x 3) and face j
-/// the triangle of row j of `faces` (integer m x 3), in that orientation.
-/// \throws expmap::Invalid_input naming the first problem found.
-inline Mesh mesh_from_arrays(py::handle vertices_object, py::handle faces_object) {
+/// A mesh built from the caller's arrays, and how its vertices relate to
+/// the caller's rows.
+struct Arrays_mesh {
+  Mesh mesh;
+  /// Rows of the caller's vertex array (vertex i of `mesh` is row i for
+  /// every i below `rows`; the copies made of split vertices follow).
+  std::size_t rows = 0;
+  /// `original[i]` is the row vertex i of `mesh` copies; empty if nothing
+  /// was split (then the identity).
+  std::vector<std::size_t> original;
+  /// What was changed to make a mesh of the arrays, one sentence each.
+  std::vector<std::string> notes;
+};
+
+/// The mesh of the triangles in the rows of `faces` (integer m x 3) over the
+/// points in the rows of `vertices` (float n x 3), made as a file's faces
+/// are (`expmap::IO::mesh_from_polygon_soup`, shared with
+/// `read_triangle_mesh`): faces oriented consistently, duplicate faces
+/// dropped, and vertices at non-manifold edges and vertices split into one
+/// copy per sheet, each change said in `notes`.
+/// \throws expmap::Invalid_input naming the first problem found in the
+/// arrays (shape, dtype, a non-finite coordinate, an index out of range, a
+/// face repeating a vertex).
+inline Arrays_mesh mesh_from_arrays(py::handle vertices_object, py::handle faces_object) {
   const Real_array vertices = Real_array::ensure(checked_array(
       vertices_object, "vertices", 3, "f", "a float array of shape (n, 3)"));
   const Index_array faces = Index_array::ensure(checked_array(
@@ -80,6 +103,7 @@ inline Mesh mesh_from_arrays(py::handle vertices_object, py::handle faces_object
       throw expmap::Invalid_input("vertex " + std::to_string(i / 3) +
                                   " has a coordinate that is not finite (NaN or infinity)");
   const std::int64_t* f = faces.data();
+  std::vector<std::vector<std::size_t>> triangles(static_cast<std::size_t>(m));
   for (py::ssize_t j = 0; j < m; ++j) {
     const std::int64_t* t = f + 3 * j;
     for (int k = 0; k < 3; ++k)
@@ -87,28 +111,27 @@ inline Mesh mesh_from_arrays(py::handle vertices_object, py::handle faces_object
         throw expmap::Invalid_input("face " + std::to_string(j) + " names vertex " +
                                     std::to_string(t[k]) + ", out of range (there are " +
                                     std::to_string(n) + " vertices)");
+    // A file's such faces are dropped; in arrays built by a program it is
+    // more likely a mistake the caller wants to hear about.
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
       throw expmap::Invalid_input("face " + std::to_string(j) + " repeats a vertex (" +
                                   std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
                                   std::to_string(t[2]) + ")");
+    triangles[static_cast<std::size_t>(j)] = {static_cast<std::size_t>(t[0]),
+                                              static_cast<std::size_t>(t[1]),
+                                              static_cast<std::size_t>(t[2])};
   }
+  std::vector<Mesh::Point> points;
+  points.reserve(static_cast<std::size_t>(n));
+  for (py::ssize_t i = 0; i < n; ++i) points.emplace_back(x[3 * i], x[3 * i + 1], x[3 * i + 2]);
 
-  Mesh mesh;
-  mesh.reserve(static_cast<Mesh::size_type>(n), static_cast<Mesh::size_type>(3 * m),
-               static_cast<Mesh::size_type>(m));
-  for (py::ssize_t i = 0; i < n; ++i)
-    mesh.add_vertex(Mesh::Point(x[3 * i], x[3 * i + 1], x[3 * i + 2]));
-  for (py::ssize_t j = 0; j < m; ++j) {
-    const std::int64_t* t = f + 3 * j;
-    auto v = [&](int k) { return Mesh::Vertex_index(static_cast<Mesh::size_type>(t[k])); };
-    if (mesh.add_face(v(0), v(1), v(2)) == Mesh::null_face())
-      throw expmap::Invalid_input(
-          "face " + std::to_string(j) + " (" + std::to_string(t[0]) + ", " +
-          std::to_string(t[1]) + ", " + std::to_string(t[2]) +
-          ") cannot be added: the faces do not form a consistently oriented 2-manifold mesh "
-          "(an edge shared by more than two faces, or by two faces in the same direction)");
-  }
-  return mesh;
+  Arrays_mesh result;
+  result.rows = static_cast<std::size_t>(n);
+  const expmap::IO::Mesh_reading_report report =
+      expmap::IO::mesh_from_polygon_soup(std::move(points), std::move(triangles), result.mesh);
+  result.notes = report.notes;
+  if (report.file_index.size() > result.rows) result.original = report.file_index;
+  return result;
 }
 
 /// (vertices float64 n x 3, faces int64 m x 3) of a triangle mesh, vertices

@@ -24,6 +24,7 @@
 #include <climits>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <optional>
 #include <string>
 
@@ -38,17 +39,51 @@ class Mesh_file_error : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// A method object and the mesh it was built on (kept alive with it).
+/// A method object and the mesh it was built on (kept alive with it), with
+/// the caller's numbering: the mesh may have more vertices than the caller's
+/// arrays rows, copies of split non-manifold vertices.
 template <class Method>
 struct Bound_method {
   std::unique_ptr<Mesh> mesh;
   std::unique_ptr<const Method> method;
+  std::size_t rows = 0;                ///< rows of the caller's vertex array
+  std::vector<std::size_t> original;   ///< row of each mesh vertex; empty: the identity
+  std::vector<std::size_t> component;  ///< of each mesh vertex, if `original` is not empty
 };
+
+/// A label per vertex of `mesh`, equal for vertices joined by faces.
+inline std::vector<std::size_t> vertex_components(const Mesh& mesh) {
+  std::vector<std::size_t> parent(mesh.number_of_vertices());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto root = [&](std::size_t v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (Mesh::Face_index f : mesh.faces()) {
+    const std::size_t first = root(mesh.source(mesh.halfedge(f)));
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      parent[root(v)] = first;
+  }
+  for (std::size_t v = 0; v < parent.size(); ++v) parent[v] = root(v);
+  return parent;
+}
+
+/// Says what was changed to make a mesh of the arrays as a UserWarning each.
+inline void warn(const std::vector<std::string>& notes) {
+  for (const std::string& note : notes)
+    if (PyErr_WarnEx(PyExc_UserWarning, note.c_str(), 2) != 0)
+      throw py::error_already_set();  // warnings turned into errors
+}
 
 template <class Method, class Make>
 Bound_method<Method> bind_to_arrays(py::handle vertices, py::handle faces, Make make) {
+  Arrays_mesh arrays = mesh_from_arrays(vertices, faces);
+  warn(arrays.notes);
   Bound_method<Method> bound;
-  bound.mesh = std::make_unique<Mesh>(mesh_from_arrays(vertices, faces));
+  bound.mesh = std::make_unique<Mesh>(std::move(arrays.mesh));
+  bound.rows = arrays.rows;
+  bound.original = std::move(arrays.original);
+  if (!bound.original.empty()) bound.component = vertex_components(*bound.mesh);
   py::gil_scoped_release release;  // the precomputation can take seconds
   bound.method = make(*bound.mesh);
   return bound;
@@ -76,8 +111,22 @@ std::size_t index_argument(py::handle value, const char* name) {
   return static_cast<std::size_t>(i);
 }
 
-/// The patch from exactly one of the keyword arguments.
-expmap::Patch patch_argument(std::size_t mesh_vertices, std::optional<double> radius,
+/// A source vertex: a row of the caller's vertex array (a copy made of a
+/// split vertex is not one).
+template <class Method>
+std::size_t source_argument(const Bound_method<Method>& b, py::handle value) {
+  const std::size_t s = index_argument(value, "source");
+  if (s >= b.rows)
+    throw expmap::Invalid_input("source vertex " + std::to_string(s) +
+                                " is out of range (the mesh has " + std::to_string(b.rows) +
+                                " vertices)");
+  return s;
+}
+
+/// The patch from exactly one of the keyword arguments; a `vertex_set` in
+/// the caller's rows (see `mesh_patch()`).
+template <class Method>
+expmap::Patch patch_argument(const Bound_method<Method>& b, std::optional<double> radius,
                              std::optional<double> fraction, py::object count,
                              py::object vertex_set) {
   const int given = radius.has_value() + fraction.has_value() + !count.is_none() +
@@ -92,8 +141,30 @@ expmap::Patch patch_argument(std::size_t mesh_vertices, std::optional<double> ra
     const std::size_t k = index_argument(count, "vertices");
     return expmap::Patch::vertex_count(k);
   }
-  const Index_array set = checked_indices(vertex_set, "vertex_set", mesh_vertices);
+  const Index_array set = checked_indices(vertex_set, "vertex_set", b.rows);
   return expmap::Patch::vertex_set(std::vector<std::size_t>(set.data(), set.data() + set.size()));
+}
+
+/// The patch of a query from `source` in the mesh's vertices: a vertex set
+/// of the caller's rows becomes, for each row, its mesh vertices (a split
+/// vertex's copies) connected to `source`, or the row's own vertex if none
+/// is (which the library then names as not connected). Other patches, and
+/// every patch where nothing was split, as they are.
+template <class Method>
+expmap::Patch mesh_patch(const Bound_method<Method>& b, std::size_t source,
+                         const expmap::Patch& patch) {
+  if (b.original.empty() || patch.kind() != expmap::Patch::Kind::vertex_set) return patch;
+  std::vector<bool> chosen(b.rows, false), reached(b.rows, false);
+  for (std::size_t row : patch.vertices()) chosen[row] = true;
+  std::vector<std::size_t> vertices;
+  for (std::size_t v = 0; v < b.original.size(); ++v)
+    if (chosen[b.original[v]] && b.component[v] == b.component[source]) {
+      vertices.push_back(v);
+      reached[b.original[v]] = true;
+    }
+  for (std::size_t row : patch.vertices())
+    if (!reached[row]) vertices.push_back(row);
+  return expmap::Patch::vertex_set(std::move(vertices));
 }
 
 /// The query options from `reference`: None or 3 numbers (the library
@@ -145,16 +216,16 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       [](const Bound& b, py::handle source, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
          py::handle reference) {
-        const std::size_t s = index_argument(source, "source");
+        const std::size_t s = source_argument(b, source);
         const expmap::Patch patch =
-            patch_argument(b.method->number_of_vertices(), radius, fraction, vertices, vertex_set);
+            mesh_patch(b, s, patch_argument(b, radius, fraction, vertices, vertex_set));
         const expmap::Query_options query = query_argument(reference);
         Map map;
         {
           py::gil_scoped_release release;
           map = b.method->compute_by_index(s, patch, query);
         }
-        return Map_arrays(map);
+        return Map_arrays(map, b.original);
       },
       py::arg("source"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
@@ -164,19 +235,19 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
                    "Geodesic polar coordinates around vertex ``source`` (0-based row of\n"
                    "the vertex array). ") +
        patch_doc +
-       "\nRaises ValueError for invalid input (a source out of range or isolated, a\n"
-       "bad patch) and RuntimeError when the computation fails (e.g. heat\n"
-       "underflow: choose a larger time factor or a smaller patch).")
+       "\nRaises ValueError (InvalidInput) for invalid input (a source out of range\n"
+       "or isolated, a bad patch) and RuntimeError (ComputationError) when the\n"
+       "computation fails (e.g. heat underflow: choose a larger time factor or a\n"
+       "smaller patch).")
           .c_str());
   c.def(
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
          py::handle reference, py::handle threads_object) {
-        const std::size_t n = b.method->number_of_vertices();
-        const Index_array checked = checked_indices(sources_object, "sources", n);
+        const Index_array checked = checked_indices(sources_object, "sources", b.rows);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
-        const expmap::Patch patch = patch_argument(n, radius, fraction, vertices, vertex_set);
+        const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
         const expmap::Query_options query = query_argument(reference);
         const std::size_t threads = index_argument(threads_object, "threads");
         if (threads > 4096)
@@ -187,9 +258,15 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
         expmap::Batch_result<Mesh::Vertex_index> batch;
         {
           py::gil_scoped_release release;
-          batch = b.method->compute_many_by_index(sources, patch, options, query);
+          if (b.original.empty() || patch.kind() != expmap::Patch::Kind::vertex_set)
+            batch = b.method->compute_many_by_index(sources, patch, options, query);
+          else  // a vertex set on the sheets of each source
+            batch = expmap::internal::run_batch<Mesh::Vertex_index>(
+                sources, options, [&](std::size_t s) {
+                  return b.method->compute_by_index(s, mesh_patch(b, s, patch), query);
+                });
         }
-        return Batch_arrays(sources, batch.maps, std::move(batch.errors));
+        return Batch_arrays(sources, batch.maps, std::move(batch.errors), b.original);
       },
       py::arg("sources"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
@@ -205,8 +282,8 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
        "(sources out of range, a bad patch).")
           .c_str());
   c.def_property_readonly(
-      "number_of_vertices", [](const Bound& b) { return b.method->number_of_vertices(); },
-      "Number of vertices of the mesh.");
+      "number_of_vertices", [](const Bound& b) { return b.rows; },
+      "Number of vertices of the mesh: rows of the vertex array it was built from.");
 }
 
 template <class Method>
@@ -221,9 +298,16 @@ py::class_<Bound_method<Method>> bind_plain_method(py::module_& m, const char* n
         py::arg("vertices"), py::arg("faces"),
         "Builds the method on the mesh (vertices: float array n x 3; faces:\n"
         "integer array m x 3, each row a triangle of vertex rows).\n"
+        "The faces are made a mesh as a file's are (read_mesh): if they are not\n"
+        "an oriented 2-manifold they are oriented and duplicates dropped, and a\n"
+        "vertex at a non-manifold edge or where sheets touch (a bow tie) is split\n"
+        "into one copy per sheet; each change is a UserWarning naming the split\n"
+        "vertices. Results name a copy by its vertex's row, so one row may appear\n"
+        "twice in a map; a source row maps the sheet that kept the row (the\n"
+        "manual, section 11).\n"
         "Raises ValueError for arrays of the wrong shape or dtype, non-finite\n"
-        "coordinates, out-of-range or repeated indices, faces that do not form\n"
-        "an oriented 2-manifold, and meshes the method rejects.");
+        "coordinates, out-of-range indices, a face repeating a vertex, and\n"
+        "meshes the method rejects.");
   add_queries(c);
   return c;
 }
@@ -282,7 +366,8 @@ void bind_heat(py::module_& m) {
             std::make_pair(defaults.near_source_blend.begin, defaults.near_source_blend.end),
         py::arg("query_threads") = defaults.query_threads,
         "Precomputes operators and factorizations of the mesh (vertices: float\n"
-        "array n x 3; faces: integer array m x 3).\n\n"
+        "array n x 3; faces: integer array m x 3, made a mesh as for\n"
+        "DiscreteExponentialMap).\n\n"
         "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
         "    larger is smoother.\n"
         "distance_time_factor: time factor of the heat the distance comes from,\n"
@@ -312,9 +397,10 @@ void bind_heat(py::module_& m) {
         "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
         "    (0, 0) for the paper's pure heat coordinates.\n"
         "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
-        "    runs beside the distance's (the same maps, 0.79-0.97x the time on\n"
-        "    patches of 750+ vertices). compute_many on more than one thread runs a\n"
-        "    source per thread, each on one.\n\n"
+        "    runs beside the distance's (the same maps up to round-off, 0.79-0.97x\n"
+        "    the time on patches of 750+ vertices). compute_many on more than one\n"
+        "    thread runs a source per thread, each on one, and gives the same maps\n"
+        "    bit for bit on any number of threads.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
   add_queries(c);
   c.def_property_readonly(
@@ -330,7 +416,7 @@ void bind_heat(py::module_& m) {
       "near_source_blend_at",
       [](const Bound& b, py::handle source) {
         const expmap::Near_source_blend blend =
-            b.method->near_source_blend_at(index_argument(source, "source"));
+            b.method->near_source_blend_at(source_argument(b, source));
         return std::make_pair(blend.begin, blend.end);
       },
       py::arg("source"),
@@ -350,12 +436,37 @@ PYBIND11_MODULE(_expmap, m) {
 
   py::register_exception<expmap::Invalid_input>(m, "InvalidInput", PyExc_ValueError)
       .attr("__doc__") = "Input the library cannot use (expmap::Invalid_input); a ValueError.";
-  py::register_exception<expmap::Computation_error>(m, "ComputationError", PyExc_RuntimeError)
-      .attr("__doc__") =
+  static py::exception<expmap::Computation_error>& computation_error =
+      py::register_exception<expmap::Computation_error>(m, "ComputationError",
+                                                        PyExc_RuntimeError);
+  computation_error.attr("__doc__") =
       "A computation that failed on valid input (expmap::Computation_error), e.g. heat\n"
       "underflow; a RuntimeError.";
   py::register_exception<Mesh_file_error>(m, "MeshFileError", PyExc_OSError)
       .attr("__doc__") = "A mesh file that is missing or cannot be opened; an OSError.";
+  // Any other C++ exception from this module (a dependency's or the standard
+  // library's, whose text speaks of their internals) is a ComputationError
+  // in the library's words; ours, pybind11's and Python's own pass on to the
+  // translators above.
+  py::register_local_exception_translator([](std::exception_ptr thrown) {
+    try {
+      std::rethrow_exception(thrown);
+    } catch (const expmap::Invalid_input&) {
+      throw;
+    } catch (const expmap::Computation_error&) {
+      throw;
+    } catch (const Mesh_file_error&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw;  // MemoryError
+    } catch (const py::builtin_exception&) {
+      throw;
+    } catch (const py::error_already_set&) {
+      throw;
+    } catch (const std::exception& e) {
+      computation_error(expmap::internal::user_message(e).c_str());
+    }
+  });
 
   // The enums are listed once, here; Python code reads them from
   // __members__, never from a list of its own.
@@ -472,10 +583,12 @@ PYBIND11_MODULE(_expmap, m) {
       "Reads a .off, .obj, .ply or .stl mesh with the library's reader\n"
       "(expmap::IO::read_triangle_mesh, as the command-line program does): vertices\n"
       "float64 n x 3, faces int64 m x 3. Faces that are not an oriented 2-manifold\n"
-      "are read as a polygon soup and oriented; polygons are split into triangles\n"
-      "(no vertex added) unless triangulate is False; repair removes degenerate\n"
-      "faces and needles, and with them vertices, so vertex i is then file vertex\n"
-      "file_index[i]. Each repair is reported as a UserWarning.\n"
+      "are read as a polygon soup and oriented; a vertex where sheets meet is\n"
+      "split into one copy per sheet, the copies after the file's vertices;\n"
+      "polygons are split into triangles (no vertex added) unless triangulate is\n"
+      "False; repair removes degenerate faces and needles, and with them\n"
+      "vertices. Vertex i is file vertex file_index[i] (the identity unless a\n"
+      "vertex was split or removed). Each repair is reported as a UserWarning.\n"
       "Raises OSError (MeshFileError) if the file cannot be opened and ValueError\n"
       "if it is malformed or (triangulate=False) has a face that is not a triangle.");
 

@@ -29,8 +29,10 @@ def cli_map(tmp_path, mesh, method, source, *patch):
 
 
 def assert_same_map(local, reference):
-    # The CSV holds the doubles exactly (max_digits10 digits), and both sides
-    # build the same Surface_mesh: equal to the last bit.
+    # The CSV holds the doubles exactly (max_digits10 digits), both sides
+    # build the same Surface_mesh, and ctest runs both with the same
+    # environment, so OpenBLAS on as many threads: equal to the last bit
+    # (different BLAS thread counts: test_determinism.py).
     np.testing.assert_array_equal(local.vertices, reference["vertex"].astype(np.int64))
     np.testing.assert_array_equal(local.r, reference["r"])
     np.testing.assert_array_equal(local.theta, reference["theta"])

@@ -138,8 +138,6 @@ def bad_meshes(V, F):
     negative[0, 0] = -1
     repeated = F.copy()
     repeated[1, 1] = repeated[1, 0]
-    flipped = F.copy()
-    flipped[0] = flipped[0, ::-1]
     return [
         ("vertices n x 2", V[:, :2], F),
         ("vertices 1-D", V.ravel(), F),
@@ -158,7 +156,6 @@ def bad_meshes(V, F):
         ("negative face index", V, negative),
         ("huge unsigned face index", V, np.full_like(F, np.iinfo(np.uint64).max, dtype=np.uint64)),
         ("repeated vertex in a face", V, repeated),
-        ("inconsistent orientation", V, flipped),
         ("empty vertices", np.zeros((0, 3)), F),
         ("empty faces", V, np.zeros((0, 3), dtype=np.int64)),
         ("None", None, F),
@@ -264,6 +261,8 @@ def test_everything_is_documented():
 
 
 @pytest.mark.filterwarnings("ignore:.*triangulated")  # hole.off has polygons
+@pytest.mark.filterwarnings("ignore:split non-manifold")  # faces removed leave bow ties
+@pytest.mark.filterwarnings("ignore:its faces are not")
 def test_damaged_real_meshes_raise_or_give_finite_maps():
     """Real meshes with faces removed, points merged, flattened or scaled to
     extremes: every method either raises ValueError / RuntimeError or

@@ -72,24 +72,46 @@ struct Soup_orientation_counter : CGAL::Polygon_mesh_processing::Default_orienta
   }
 };
 
-/// The note on split non-manifold vertices.
-inline std::string split_note(std::size_t copies) {
-  return "split non-manifold vertices into " + std::to_string(copies) +
-         " extra copies, one per sheet meeting there";
+/// The note on split non-manifold vertices, naming the first few of them
+/// by `original_index` (the caller's numbering of the mesh's vertices).
+inline std::string split_note(const std::vector<std::pair<std::size_t, std::size_t>>& copies,
+                              const std::vector<std::size_t>& original_index) {
+  std::vector<std::size_t> split;
+  for (const auto& copy : copies) split.push_back(original_index[copy.first]);
+  std::sort(split.begin(), split.end());
+  split.erase(std::unique(split.begin(), split.end()), split.end());
+  constexpr std::size_t named = 10;
+  std::string list;
+  for (std::size_t i = 0; i < std::min(split.size(), named); ++i)
+    list += (i ? ", " : "") + std::to_string(split[i]);
+  if (split.size() > named) list += " and " + std::to_string(split.size() - named) + " more";
+  return "split non-manifold " + std::string(split.size() == 1 ? "vertex " : "vertices ") + list +
+         " into " + std::to_string(copies.size()) + " extra cop" +
+         (copies.size() == 1 ? "y" : "ies") + ", one per sheet meeting there";
+}
+
+/// Splits every vertex of `mesh` where several sheets meet (a bow tie) into
+/// one copy per sheet, added after the other vertices, and appends
+/// (original, copy) to `copies`: a Surface_mesh holds such a vertex, but a
+/// map through it would fold one sheet onto a single direction.
+template <class Point>
+void split_non_manifold_vertices(CGAL::Surface_mesh<Point>& mesh,
+                                 std::vector<std::pair<std::size_t, std::size_t>>& copies) {
+  using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
+  std::vector<std::vector<Vertex>> split;
+  CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
+      mesh, CGAL::parameters::output_iterator(std::back_inserter(split)));
+  for (const auto& group : split)
+    for (std::size_t k = 1; k < group.size(); ++k) copies.emplace_back(group[0], group[k]);
 }
 
 /// Drops polygons that cannot be faces (fewer than three vertices, or a
 /// vertex twice) and duplicates; never renumbers points. Returns notes.
+/// \pre every index is a point's.
 template <class Point>
 std::vector<std::string> clean_polygons(const std::vector<Point>& points,
                                         std::vector<std::vector<std::size_t>>& polygons) {
   std::vector<std::string> notes;
-  const std::size_t point_count = points.size();
-  for (std::size_t f = 0; f < polygons.size(); ++f)
-    for (std::size_t v : polygons[f])
-      if (v >= point_count)
-        throw Invalid_input("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                            ", but the file has " + std::to_string(point_count) + " vertices");
   const std::size_t before = polygons.size();
   polygons.erase(std::remove_if(polygons.begin(), polygons.end(),
                                 [](std::vector<std::size_t> p) {
@@ -107,35 +129,127 @@ std::vector<std::string> clean_polygons(const std::vector<Point>& points,
   return notes;
 }
 
-/// The file as a polygon soup, oriented and turned into a mesh: the path for
-/// files whose faces do not form an oriented 2-manifold as they stand.
+/// `polygons` over `points` oriented and turned into `mesh`: the path for
+/// faces that do not form an oriented 2-manifold as they stand. Appends
+/// (original, copy) to `copies` for every point duplicated to separate the
+/// sheets at a non-manifold edge or vertex. Returns notes; `name` names
+/// the faces' origin in errors.
 template <class Point>
-std::vector<std::string> read_as_oriented_soup(
-    const std::string& path, CGAL::Surface_mesh<Point>& mesh, std::size_t& file_vertices,
+std::vector<std::string> mesh_from_oriented_soup(
+    const std::string& name, std::vector<Point>& points,
+    std::vector<std::vector<std::size_t>>& polygons, CGAL::Surface_mesh<Point>& mesh,
     std::vector<std::pair<std::size_t, std::size_t>>& copies) {
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  if (!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
-    throw Invalid_input("cannot read '" + path +
-                        "': the format is not .off, .obj, .ply or .stl, or the file is malformed "
-                        "(truncated, a count or index out of range, or a non-number)");
-  file_vertices = points.size();
   std::vector<std::string> notes = clean_polygons(points, polygons);
-  if (polygons.empty()) throw Invalid_input("'" + path + "' has no usable face");
+  if (polygons.empty()) throw Invalid_input(name + " has no usable face");
   std::size_t reversed = 0;
   Soup_orientation_counter counter;
   counter.reversed = &reversed;
   counter.copies = &copies;
   PMP::orient_polygon_soup(points, polygons, CGAL::parameters::visitor(counter));
   if (reversed) notes.push_back("reversed " + std::to_string(reversed) + " faces to orient it");
-  if (!copies.empty()) notes.push_back(split_note(copies.size()));
+  // orient_polygon_soup separates every non-manifold edge and vertex; the
+  // check stands in for CGAL's precondition, off in Release builds.
+  if (!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Invalid_input("the faces could not be oriented into a 2-manifold mesh, even after "
+                        "splitting non-manifold edges and vertices");
   mesh.clear();
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
   return notes;
 }
 
+/// The report's `file_index` and split note from the copies made.
+inline void record_copies(const std::vector<std::pair<std::size_t, std::size_t>>& copies,
+                          std::size_t mesh_vertices, Mesh_reading_report& report) {
+  report.file_index.resize(mesh_vertices);
+  std::iota(report.file_index.begin(), report.file_index.end(), std::size_t(0));
+  // In the order made: a copy of a copy gets the index of the first.
+  for (const auto& [original, copy] : copies)
+    report.file_index[copy] = report.file_index[original];
+  if (!copies.empty()) report.notes.push_back(split_note(copies, report.file_index));
+}
+
+/// `mesh` made of the polygons face by face, as CGAL's readers make a
+/// Surface_mesh of a file's faces: true unless a polygon cannot be a face
+/// (fewer than three distinct vertices) or cannot be added (a non-manifold
+/// edge, or an edge two faces share in the same direction); then `mesh` is
+/// left empty. Where sheets touch at a vertex only, the faces are added.
+template <class Point>
+bool add_polygons_as_faces(const std::vector<Point>& points,
+                           const std::vector<std::vector<std::size_t>>& polygons,
+                           CGAL::Surface_mesh<Point>& mesh) {
+  using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
+  using Size = typename CGAL::Surface_mesh<Point>::size_type;
+  for (std::vector<std::size_t> p : polygons) {
+    std::sort(p.begin(), p.end());
+    if (p.size() < 3 || std::adjacent_find(p.begin(), p.end()) != p.end()) return false;
+  }
+  mesh.clear();
+  for (const Point& p : points) mesh.add_vertex(p);
+  std::vector<Vertex> face;
+  for (const auto& polygon : polygons) {
+    face.clear();
+    for (std::size_t v : polygon) face.push_back(Vertex(static_cast<Size>(v)));
+    if (mesh.add_face(face) == CGAL::Surface_mesh<Point>::null_face()) {
+      mesh.clear();
+      return false;
+    }
+  }
+  return true;
+}
+
+/// `mesh_from_polygon_soup()`, with `name` naming the polygons' origin in
+/// errors.
+template <class Point>
+Mesh_reading_report mesh_from_soup(const std::string& name, std::vector<Point>& points,
+                                   std::vector<std::vector<std::size_t>>& polygons,
+                                   CGAL::Surface_mesh<Point>& mesh) {
+  for (std::size_t f = 0; f < polygons.size(); ++f)
+    for (std::size_t v : polygons[f])
+      if (v >= points.size())
+        throw Invalid_input("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                            ", but " + name + " has " + std::to_string(points.size()) +
+                            " vertices");
+  Mesh_reading_report report;
+  report.file_vertices = points.size();
+  std::vector<std::pair<std::size_t, std::size_t>> copies;  // (original, copy)
+  mesh.clear();
+  if (add_polygons_as_faces(points, polygons, mesh)) {
+    split_non_manifold_vertices(mesh, copies);
+  } else {
+    std::string note = "its faces are not an oriented 2-manifold mesh; oriented as a polygon soup";
+    for (const std::string& s : mesh_from_oriented_soup(name, points, polygons, mesh, copies))
+      note += ", " + s;
+    report.notes.push_back(note);
+  }
+  record_copies(copies, mesh.number_of_vertices(), report);
+  return report;
+}
+
 }  // namespace internal
+
+/// \ingroup PkgExpmapIO
+/// Makes `mesh` from the polygons `polygons` over `points` (each polygon
+/// the indices of its points, in order) as `read_triangle_mesh()` makes it
+/// from a file's (step 2 there): face by face as they stand if they can be
+/// added so (an oriented mesh, possibly with sheets touching at vertices),
+/// oriented as a polygon soup otherwise (faces with fewer than
+/// three distinct points and duplicate faces dropped, faces reversed and,
+/// at non-manifold edges, points duplicated); either way a vertex where
+/// several sheets meet is split into one copy per sheet. Vertex i of `mesh`
+/// is point i for every i below `points.size()`; the copies follow, and
+/// `file_index` of the report names the point each vertex copies. Polygons
+/// are not triangulated.
+/// \throws Invalid_input if a polygon names a point out of range, no polygon
+/// has three distinct points, or (not expected: `orient_polygon_soup`
+/// separates every non-manifold edge and vertex) the soup cannot be made a
+/// 2-manifold.
+template <class Point>
+Mesh_reading_report mesh_from_polygon_soup(std::vector<Point> points,
+                                           std::vector<std::vector<std::size_t>> polygons,
+                                           CGAL::Surface_mesh<Point>& mesh) {
+  return internal::mesh_from_soup("the polygon soup", points, polygons, mesh);
+}
 
 /// \ingroup PkgExpmapIO
 /// Reads the mesh file at `path` (.off, .obj, .ply or .stl) into `mesh`,
@@ -167,30 +281,22 @@ Mesh_reading_report read_triangle_mesh(const std::string& path, CGAL::Surface_me
   check_declared_sizes(path);
   Mesh_reading_report report;
   mesh.clear();
-  std::vector<std::pair<std::size_t, std::size_t>> copies;  // (original, copy)
   if (CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false)) &&
       !mesh.is_empty()) {
-    // A Surface_mesh holds a vertex where two sheets touch (a bow tie), but
-    // a map through it would fold one sheet onto a single direction.
-    using Vertex = typename CGAL::Surface_mesh<Point>::Vertex_index;
     report.file_vertices = mesh.number_of_vertices();
-    std::vector<std::vector<Vertex>> split;
-    CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices(
-        mesh, CGAL::parameters::output_iterator(std::back_inserter(split)));
-    for (const auto& group : split)
-      for (std::size_t k = 1; k < group.size(); ++k) copies.emplace_back(group[0], group[k]);
-    if (!copies.empty()) report.notes.push_back(internal::split_note(copies.size()));
+    std::vector<std::pair<std::size_t, std::size_t>> copies;  // (original, copy)
+    internal::split_non_manifold_vertices(mesh, copies);
+    internal::record_copies(copies, mesh.number_of_vertices(), report);
   } else {
-    const auto soup_notes =
-        internal::read_as_oriented_soup(path, mesh, report.file_vertices, copies);
-    std::string note = "its faces are not an oriented 2-manifold mesh; read as a polygon soup";
-    for (const std::string& s : soup_notes) note += ", " + s;
-    report.notes.push_back(note);
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> polygons;
+    if (!CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(false)))
+      throw Invalid_input("cannot read '" + path +
+                          "': the format is not .off, .obj, .ply or .stl, or the file is "
+                          "malformed (truncated, a count or index out of range, or a "
+                          "non-number)");
+    report = internal::mesh_from_soup("'" + path + "'", points, polygons, mesh);
   }
-  report.file_index.resize(mesh.number_of_vertices());
-  std::iota(report.file_index.begin(), report.file_index.end(), std::size_t(0));
-  for (const auto& [original, copy] : copies)
-    report.file_index[copy] = report.file_index[original];
 
   if (options.triangulate && !CGAL::is_triangle_mesh(mesh)) {
     std::size_t polygons = 0;
