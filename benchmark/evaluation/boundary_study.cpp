@@ -158,18 +158,19 @@ struct Summary_row {
   Boundary_quality quality;
 };
 
-/// PASS, FAIL(the targets missed), or n/a where the patches have no
-/// triangles (the tiny meshes: 5% of a few vertices), which would pass
-/// every target without measuring anything.
+/// PASS, FAIL(the targets missed, joined by '+' so that the summary CSV
+/// needs no quoting), or n/a where the patches have no triangles (the tiny
+/// meshes: 5% of a few vertices), which would pass every target without
+/// measuring anything.
 std::string verdict(const Summary_row& r) {
   const Boundary_quality& q = r.quality;
   if (q.heat_triangles == 0 && r.heat_errors == 0) return "n/a";
   if (q.pass() && r.heat_errors == 0) return "PASS";
   std::string failed;
-  if (!q.flips_pass) failed += "flips,";
-  if (!q.collapse_pass) failed += "collapse,";
-  if (!q.angles_pass) failed += "angles,";
-  if (r.heat_errors) failed += "heat errors,";
+  if (!q.flips_pass) failed += "flips+";
+  if (!q.collapse_pass) failed += "collapse+";
+  if (!q.angles_pass) failed += "angles+";
+  if (r.heat_errors) failed += "heat errors+";
   failed.pop_back();
   return "FAIL(" + failed + ")";
 }
