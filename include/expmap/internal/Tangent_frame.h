@@ -30,7 +30,7 @@ struct Tangent_frame {
 /// (the sum of their area vectors). Where the mean curvature normal is not
 /// reliable (it vanishes on flat regions and turns arbitrarily at saddles:
 /// less than 1e-3 of its scale, or more than 60 degrees from the area
-/// normal), the area normal is used instead.
+/// normal) and at boundary vertices, the area normal is used instead.
 inline Vector3 vertex_normal(const Mesh_arrays& m, int v) {
   Vector3 curvature{{0, 0, 0}}, area{{0, 0, 0}};
   double scale = 0;
@@ -56,7 +56,13 @@ inline Vector3 vertex_normal(const Mesh_arrays& m, int v) {
                         " has no well-defined normal (its incident faces cancel out)");
   const Vector3 area_normal = (1.0 / area_norm) * area;
   const double c = norm(curvature);
-  if (c > 1e-3 * scale) {
+  // At a boundary vertex the cotan Laplacian of the positions is no
+  // curvature normal: the missing wedge adds a part inside the tangent
+  // plane, pointing into the surface (head.off, vertex 499: 55 degrees from
+  // the area normal, mean angle errors of 0.43 rad against the exact map).
+  const bool on_boundary = m.neighbor_start[v + 1] - m.neighbor_start[v] >
+                           m.vertex_face_start[v + 1] - m.vertex_face_start[v];
+  if (!on_boundary && c > 1e-3 * scale) {
     const Vector3 mean_curvature_normal = (1.0 / c) * curvature;
     const double agreement = dot(mean_curvature_normal, area_normal);
     if (std::abs(agreement) >= 0.5)
