@@ -18,7 +18,8 @@ GeodesicPolarCoordinates (Melvaer & Reimers 2012) and ExactExponentialMap
 (exact polyhedral geodesics, a slow reference). Invalid input raises
 ValueError (expmap.InvalidInput) with the library's message; a failed
 computation raises RuntimeError (expmap.ComputationError). expmap.dask
-spreads many meshes over a Dask cluster.
+spreads many meshes over a Dask cluster. expmap.__version__ is the
+library's version (include/expmap/version.h), compiled into the module.
 """
 
 from ._expmap import (
@@ -37,6 +38,7 @@ from ._expmap import (
     PoissonRegularization,
     VertexArea,
     read_mesh,
+    __version__,
 )
 
 #: The method classes by the names the command-line program uses (--method).

@@ -16,6 +16,7 @@
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/IO/read_triangle_mesh.h>
 #include <expmap/Patch.h>
+#include <expmap/version.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -433,6 +434,7 @@ PYBIND11_MODULE(_expmap, m) {
   m.doc() =
       "Local exponential maps (geodesic polar coordinates) on triangle meshes: the\n"
       "compiled part of the `expmap` package.";
+  m.attr("__version__") = EXPMAP_VERSION_STRING;
 
   py::register_exception<expmap::Invalid_input>(m, "InvalidInput", PyExc_ValueError)
       .attr("__doc__") = "Input the library cannot use (expmap::Invalid_input); a ValueError.";

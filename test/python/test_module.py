@@ -4,6 +4,8 @@
 is a ValueError (never a crash)."""
 
 import math
+import os
+import re
 
 import numpy as np
 import pytest
@@ -39,6 +41,14 @@ def test_batch_equals_single_queries(elephant, method, threads):
         np.testing.assert_array_equal(batch.u[rows], local.uv[:, 0])
         np.testing.assert_array_equal(batch.v[rows], local.uv[:, 1])
     assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v"}
+
+
+def test_version_is_the_headers():
+    header = os.path.join(os.path.dirname(__file__), "..", "..", "include", "expmap", "version.h")
+    with open(header) as f:
+        match = re.search(r'#define EXPMAP_VERSION_STRING "([^"]+)"', f.read())
+    assert match and expmap.__version__ == match.group(1)
+    assert re.fullmatch(r"\d+\.\d+\.\d+", expmap.__version__)
 
 
 def test_local_map_arrays(heat):
