@@ -11,6 +11,8 @@ NumPy in, NumPy out::
     local.vertices, local.r, local.theta, local.uv     # NumPy arrays
     batch = heat.compute_many(range(100), vertices=50, threads=0)  # many, no GIL
     batch.offsets, batch.vertex, batch.u, batch.v, batch.errors
+    for source, m in zip(range(100), batch):          # per source: views, no copies
+        m.vertices, m.r, m.theta, m.u, m.v, m.error
 
 The four methods: HeatExponentialMap (Herholz & Alexa 2019, the smoothed
 map by heat diffusion), DiscreteExponentialMap (Schmidt et al. 2006),
@@ -24,6 +26,7 @@ library's version (include/expmap/version.h), compiled into the module.
 
 from ._expmap import (
     AngleEstimator,
+    BatchMap,
     BatchMaps,
     ComputationError,
     DiscreteExponentialMap,
@@ -51,6 +54,7 @@ METHODS = {
 
 __all__ = [
     "AngleEstimator",
+    "BatchMap",
     "BatchMaps",
     "ComputationError",
     "DiscreteExponentialMap",
