@@ -23,6 +23,7 @@
 #include <expmap/IO/write_textured_obj.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
+#include <expmap/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -312,6 +313,7 @@ std::string general_help() {
          "       expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [options] -o OUT [-o OUT ...]\n"
          "       expmap --help | expmap compute --help | expmap batch --help\n"
+         "       expmap --version\n"
          "\n"
          "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
          "u = r cos theta, v = r sin theta) around source vertices of a triangle mesh.\n"
@@ -718,6 +720,11 @@ int main(int argc, char** argv) {
     if (args[0] == "-h" || args[0] == "--help") {
       std::cout << general_help()
                 << "\nSee 'expmap compute --help' and 'expmap batch --help' for the options.\n";
+      return 0;
+    }
+    if (args[0] == "--version") {
+      if (args.size() > 1) throw Usage_error("--version takes no other arguments");
+      std::cout << "expmap " EXPMAP_VERSION_STRING "\n";
       return 0;
     }
     const std::vector<std::string> rest(args.begin() + 1, args.end());

@@ -11,6 +11,8 @@ NumPy in, NumPy out::
     local.vertices, local.r, local.theta, local.uv     # NumPy arrays
     batch = heat.compute_many(range(100), vertices=50, threads=0)  # many, no GIL
     batch.offsets, batch.vertex, batch.u, batch.v, batch.errors
+    for source, m in zip(range(100), batch):          # per source: views, no copies
+        m.vertices, m.r, m.theta, m.u, m.v, m.error
 
 The four methods: HeatExponentialMap (Herholz & Alexa 2019, the smoothed
 map by heat diffusion), DiscreteExponentialMap (Schmidt et al. 2006),
@@ -18,11 +20,13 @@ GeodesicPolarCoordinates (Melvaer & Reimers 2012) and ExactExponentialMap
 (exact polyhedral geodesics, a slow reference). Invalid input raises
 ValueError (expmap.InvalidInput) with the library's message; a failed
 computation raises RuntimeError (expmap.ComputationError). expmap.dask
-spreads many meshes over a Dask cluster.
+spreads many meshes over a Dask cluster. expmap.__version__ is the
+library's version (include/expmap/version.h), compiled into the module.
 """
 
 from ._expmap import (
     AngleEstimator,
+    BatchMap,
     BatchMaps,
     ComputationError,
     DiscreteExponentialMap,
@@ -37,6 +41,7 @@ from ._expmap import (
     PoissonRegularization,
     VertexArea,
     read_mesh,
+    __version__,
 )
 
 #: The method classes by the names the command-line program uses (--method).
@@ -49,6 +54,7 @@ METHODS = {
 
 __all__ = [
     "AngleEstimator",
+    "BatchMap",
     "BatchMaps",
     "ComputationError",
     "DiscreteExponentialMap",

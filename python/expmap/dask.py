@@ -154,6 +154,7 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     fraction, radius, vertices: the patch, exactly one (as in compute()).
     out_dir: if given, one ``<mesh stem>.npz`` per mesh is written there as
         soon as that mesh is done, and the dict maps each mesh to its file.
+        The folder (and its parents) is made if it does not exist.
     chunk_size: sources per task; smaller chunks balance and recover
         faster, larger ones cost less scheduling.
     options: keyword arguments of the method class (e.g. ``{"time_factor": 5}``).
@@ -164,7 +165,8 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     ``offsets``, ``vertex``, ``r``, ``theta``, ``u``, ``v`` (rows
     offsets[i]:offsets[i+1] belong to sources[i]) and ``errors`` (per
     source, '' or why its query failed), or to the .npz path with out_dir.
-    Raises ValueError for bad arguments; a mesh that cannot be read or
+    Raises ValueError for bad arguments (an out_dir that is a file), OSError
+    if out_dir cannot be made; a mesh that cannot be read or
     precomputed raises the worker's exception here.
     """
     from distributed import as_completed
@@ -189,9 +191,12 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     options = dict(options or {})
     npz_paths = None
     if out_dir is not None:
-        if not os.path.isdir(out_dir):
-            raise ValueError("out_dir %r is not a folder" % (out_dir,))
+        if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+            raise ValueError("out_dir %r exists and is not a folder" % (out_dir,))
         npz_paths = _npz_paths(meshes, out_dir)
+        # Here, before any task: the files are written by this process, and a
+        # folder that cannot be made should fail now, not after the maps.
+        os.makedirs(out_dir, exist_ok=True)
 
     # Meshes are precomputed a few at a time (one per worker, plus one so a
     # worker can start the next while its threads still map the last), the

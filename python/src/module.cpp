@@ -16,6 +16,7 @@
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/IO/read_triangle_mesh.h>
 #include <expmap/Patch.h>
+#include <expmap/version.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -199,6 +200,48 @@ E enum_argument(py::handle value, const char* option) {
                               py::repr(value).cast<std::string>() + ")");
 }
 
+/// The namedtuple type `expmap.BatchMap` (made once, in the module's init;
+/// the module keeps it alive for as long as any function can run).
+py::handle batch_map_type;
+
+/// Source `i` of `b` (0 <= i < len(b)) as a `BatchMap`: its rows of the flat
+/// arrays as NumPy views (basic slices: no copies, and each keeps the flat
+/// array alive) and its error, None if its query succeeded.
+py::object batch_map(const Batch_arrays& b, std::size_t i) {
+  const std::int64_t* offset = b.offsets.data();
+  const py::slice rows(static_cast<py::ssize_t>(offset[i]), static_cast<py::ssize_t>(offset[i + 1]),
+                       1);
+  py::object error = py::none();
+  if (!b.errors[i].empty()) error = py::str(b.errors[i]);
+  return batch_map_type(b.sources.data()[i], b.vertex[rows], b.r[rows], b.theta[rows], b.u[rows],
+                        b.v[rows], error);
+}
+
+/// The index `batch[index]` names: any Python integer, negative from the end.
+std::size_t batch_index(const Batch_arrays& b, py::handle index) {
+  const py::object integer = py::reinterpret_steal<py::object>(PyNumber_Index(index.ptr()));
+  if (!integer) {
+    PyErr_Clear();
+    throw py::type_error("BatchMaps indices must be integers (got " +
+                         std::string(py::str(py::type::of(index).attr("__name__"))) + ")");
+  }
+  const py::ssize_t n = static_cast<py::ssize_t>(b.errors.size());
+  const py::ssize_t i = PyLong_AsSsize_t(integer.ptr());
+  if (i == -1 && PyErr_Occurred()) PyErr_Clear();  // too large either way: out of range below
+  const bool overflow = i == -1 && !integer.equal(py::int_(-1));
+  if (overflow || i < -n || i >= n)
+    throw py::index_error("BatchMaps index " + std::string(py::str(integer)) +
+                          " is out of range (" + std::to_string(n) + " sources)");
+  return static_cast<std::size_t>(i < 0 ? i + n : i);
+}
+
+/// What `iter(batch)` returns: the `BatchMap` of each source in turn. It
+/// holds the batch, so the loop may outlive the caller's reference.
+struct Batch_iterator {
+  py::object batch;
+  std::size_t next = 0;
+};
+
 const char* const patch_doc =
     "The patch is exactly one of: ``radius`` (every vertex within that geodesic\n"
     "distance), ``fraction`` (the nearest fraction of all vertices, in (0, 1]),\n"
@@ -278,8 +321,9 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
                    "threads (0: one per core) without holding the GIL. ") +
        patch_doc +
        "\nA query that fails does not end the batch: its source gets no rows and\n"
-       "its message in ``errors``. Raises ValueError for invalid arguments\n"
-       "(sources out of range, a bad patch).")
+       "its message in ``errors``. ``batch[i]`` and ``for m in batch`` give each\n"
+       "source's map as a BatchMap of views into the flat arrays. Raises ValueError\n"
+       "for invalid arguments (sources out of range, a bad patch).")
           .c_str());
   c.def_property_readonly(
       "number_of_vertices", [](const Bound& b) { return b.rows; },
@@ -433,6 +477,7 @@ PYBIND11_MODULE(_expmap, m) {
   m.doc() =
       "Local exponential maps (geodesic polar coordinates) on triangle meshes: the\n"
       "compiled part of the `expmap` package.";
+  m.attr("__version__") = EXPMAP_VERSION_STRING;
 
   py::register_exception<expmap::Invalid_input>(m, "InvalidInput", PyExc_ValueError)
       .attr("__doc__") = "Input the library cannot use (expmap::Invalid_input); a ValueError.";
@@ -525,11 +570,35 @@ PYBIND11_MODULE(_expmap, m) {
                std::to_string(a.vertices.size()) + " vertices>";
       });
 
+  // A namedtuple: it unpacks, compares and prints as Python users expect,
+  // and its fields are the arrays themselves (views), not copies.
+  py::object batch_map_namedtuple = py::module_::import("collections").attr("namedtuple")(
+      "BatchMap", py::make_tuple("source", "vertices", "r", "theta", "u", "v", "error"));
+  batch_map_namedtuple.attr("__module__") = "expmap";
+  batch_map_namedtuple.attr("__doc__") =
+      "One source's map in a BatchMaps (batch[i]): source (int), vertices, r, theta,\n"
+      "u, v (NumPy views of the batch's rows offsets[i] to offsets[i+1] of vertex,\n"
+      "r, theta, u, v: no copies, writing to them writes to the batch) and error\n"
+      "(None, or why the source's query failed; its arrays are then empty).";
+  m.attr("BatchMap") = batch_map_namedtuple;
+  batch_map_type = batch_map_namedtuple;
+
+  py::class_<Batch_iterator>(m, "BatchMapsIterator", "Iterates over a BatchMaps' BatchMap values.")
+      .def("__iter__", [](py::object self) { return self; })
+      .def("__next__", [](Batch_iterator& it) {
+        const Batch_arrays& b = it.batch.cast<const Batch_arrays&>();
+        if (it.next >= b.errors.size()) throw py::stop_iteration();
+        return batch_map(b, it.next++);
+      });
+
   py::class_<Batch_arrays>(
       m, "BatchMaps",
       "Many maps in the layout of `expmap batch -o OUT.npz`: rows offsets[i] to\n"
       "offsets[i+1] of vertex, r, theta, u, v belong to sources[i]. A source whose\n"
-      "query failed has no rows and its message in errors[i] ('' otherwise).")
+      "query failed has no rows and its message in errors[i] ('' otherwise).\n"
+      "A sequence of the sources' maps: batch[i] (negative i counts from the end)\n"
+      "is the BatchMap of sources[i], its arrays views into the flat ones, and\n"
+      "iterating gives them in order, e.g. ``for s, m in zip(sources, batch)``.")
       .def_readonly("sources", &Batch_arrays::sources, "The sources (int64, k).")
       .def_readonly("offsets", &Batch_arrays::offsets, "Row range of each source (int64, k + 1).")
       .def_readonly("vertex", &Batch_arrays::vertex, "Patch vertex of each row (int64).")
@@ -543,6 +612,17 @@ PYBIND11_MODULE(_expmap, m) {
            "The seven arrays by name (sources, offsets, vertex, r, theta, u, v), as\n"
            "numpy.savez takes them.")
       .def("__len__", [](const Batch_arrays& b) { return b.errors.size(); })
+      .def(
+          "__getitem__",
+          [](const Batch_arrays& b, py::handle index) {
+            return batch_map(b, batch_index(b, index));
+          },
+          py::arg("index"),
+          "batch[i] -> BatchMap: the map of sources[i] (i < 0 counts from the end).\n"
+          "Raises IndexError if i is out of range, TypeError if it is not an integer.")
+      .def(
+          "__iter__", [](py::object self) { return Batch_iterator{self}; },
+          "The BatchMap of each source, in the order of sources.")
       .def("__repr__", [](const Batch_arrays& b) {
         return "<BatchMaps " + std::to_string(b.errors.size()) + " sources, " +
                std::to_string(b.vertex.size()) + " rows, " + std::to_string(b.failures()) +

@@ -60,7 +60,7 @@ def assert_same_as_single_process(results, meshes_and_sources):
         assert list(got["errors"]) == [""] * len(sources)
 
 
-def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path):
+def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path, monkeypatch):
     with local_cluster() as cluster, distributed.Client(cluster, timeout=120) as client:
         results = expmap.dask.map_meshes(client, list(meshes_and_sources), sources=meshes_and_sources,
                                          chunk_size=64, **PATCH)
@@ -77,6 +77,18 @@ def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path):
             with np.load(path) as npz:  # no pickles: plain arrays only
                 loaded[mesh] = {name: npz[name] for name in npz.files}
         assert_same_as_single_process(loaded, meshes_and_sources)
+
+        # A folder that does not exist yet is made, as in the README's example
+        # (a relative out_dir="maps/"), parents included.
+        monkeypatch.chdir(tmp_path)
+        cactus = list(meshes_and_sources)[1]
+        for out_dir in ("maps/", os.path.join("new", "nested")):
+            assert not os.path.exists(out_dir)
+            written = expmap.dask.map_meshes(client, [cactus], sources={cactus: [0, 7]},
+                                             out_dir=out_dir, **PATCH)
+            assert os.path.normpath(written[cactus]) == os.path.join(os.path.normpath(out_dir), "cactus.npz")
+            with np.load(written[cactus]) as npz:
+                assert list(npz["sources"]) == [0, 7] and list(npz["errors"]) == ["", ""]
 
         # No sources: empty arrays, one offset.
         elephant = list(meshes_and_sources)[0]
@@ -123,7 +135,7 @@ def test_bad_arguments_raise_value_error(meshes_and_sources):
     for kwargs in ({}, {"fraction": 0.1, "radius": 1.0}, {"vertices": 5, "method": "nope"},
                    {"vertices": 5, "chunk_size": 0}, {"vertices": 5, "sources": [1, 2]},
                    {"vertices": 5, "sources": {meshes[0]: [1]}},
-                   {"vertices": 5, "out_dir": "/nonexistent/folder"}):
+                   {"vertices": 5, "out_dir": meshes[0]}):  # a file, not a folder
         with pytest.raises(ValueError):
             expmap.dask.map_meshes(None, meshes, **kwargs)
     with pytest.raises(ValueError, match="list"):

@@ -4,6 +4,8 @@
 is a ValueError (never a crash)."""
 
 import math
+import os
+import re
 
 import numpy as np
 import pytest
@@ -39,6 +41,62 @@ def test_batch_equals_single_queries(elephant, method, threads):
         np.testing.assert_array_equal(batch.u[rows], local.uv[:, 0])
         np.testing.assert_array_equal(batch.v[rows], local.uv[:, 1])
     assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v"}
+
+
+def test_batch_maps_index_and_iterate_as_views(heat):
+    sources = [5, 0, 2000, 77]
+    batch = heat.compute_many(sources, vertices=60, threads=2)
+    assert len(batch) == 4
+    for i, (source, m) in enumerate(zip(sources, batch)):
+        assert isinstance(m, expmap.BatchMap)
+        assert m.source == source and m.error is None
+        local = heat.compute(source, vertices=60)
+        np.testing.assert_array_equal(m.vertices, local.vertices)
+        np.testing.assert_array_equal(m.r, local.r)
+        np.testing.assert_array_equal(m.theta, local.theta)
+        np.testing.assert_array_equal(m.u, local.uv[:, 0])
+        np.testing.assert_array_equal(m.v, local.uv[:, 1])
+        # Views of the flat arrays' rows, not copies.
+        for name, flat in (("vertices", batch.vertex), ("r", batch.r), ("theta", batch.theta),
+                           ("u", batch.u), ("v", batch.v)):
+            view = getattr(m, name)
+            assert np.shares_memory(view, flat), name
+            assert view.base is not None and len(view) == batch.offsets[i + 1] - batch.offsets[i]
+        np.testing.assert_array_equal(batch[i].r, m.r)
+    assert [m.source for m in batch] == sources
+    assert batch[-1].source == 77 and batch[-4].source == 5
+    assert batch[np.int64(1)].source == 0
+    for index in (4, -5, 10**30):
+        with pytest.raises(IndexError, match="out of range"):
+            batch[index]
+    with pytest.raises(TypeError, match="integers"):
+        batch["0"]
+    # The views keep the arrays alive without the batch.
+    first = batch[0]
+    del batch
+    assert first.r[0] == 0 and first.vertices[0] == 5
+
+
+def test_batch_maps_name_a_failed_source(cactus):
+    # A vertex without faces cannot be a source: that query alone fails.
+    _, V, F = cactus
+    isolated = len(V)
+    dem = expmap.DiscreteExponentialMap(np.vstack([V, [[0.0, 0.0, 0.0]]]), F)
+    batch = dem.compute_many([0, isolated], vertices=20)
+    ok, failed = batch
+    assert batch.failures == 1
+    assert ok.error is None and len(ok.vertices) == 20
+    assert failed.source == isolated and "isolated" in failed.error
+    assert failed.error == batch.errors[1]
+    assert len(failed.vertices) == len(failed.r) == len(failed.u) == 0
+
+
+def test_version_is_the_headers():
+    header = os.path.join(os.path.dirname(__file__), "..", "..", "include", "expmap", "version.h")
+    with open(header) as f:
+        match = re.search(r'#define EXPMAP_VERSION_STRING "([^"]+)"', f.read())
+    assert match and expmap.__version__ == match.group(1)
+    assert re.fullmatch(r"\d+\.\d+\.\d+", expmap.__version__)
 
 
 def test_local_map_arrays(heat):

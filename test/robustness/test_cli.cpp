@@ -6,6 +6,8 @@
 //   target_compile_definitions(test_robustness PRIVATE
 //                              EXPMAP_CLI_PATH="$<TARGET_FILE:expmap_cli>")
 
+#include <expmap/version.h>
+
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -263,6 +265,21 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
         "--reference",
         "--no-triangulate", "--repair", "--output"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
+}
+
+// The version the program prints is the header's, which is also the one
+// CMake read for project(VERSION) (test/CMakeLists.txt passes it on).
+BOOST_AUTO_TEST_CASE(version_is_the_headers) {
+  BOOST_TEST_REQUIRE(run("--version") == 0);
+  BOOST_TEST(out() == std::string("expmap ") + EXPMAP_VERSION_STRING + "\n");
+  BOOST_TEST(err().empty());
+  BOOST_TEST(std::string(EXPMAP_VERSION_STRING) == EXPMAP_TEST_PROJECT_VERSION);
+  BOOST_TEST(std::to_string(EXPMAP_VERSION_MAJOR) + "." + std::to_string(EXPMAP_VERSION_MINOR) +
+                 "." + std::to_string(EXPMAP_VERSION_PATCH) ==
+             EXPMAP_VERSION_STRING);
+  BOOST_TEST_REQUIRE(run("--help") == 0);
+  BOOST_TEST(out().find("--version") != std::string::npos);
+  check_error("--version extra", 2);
 }
 
 BOOST_AUTO_TEST_CASE(runtime_errors_exit_with_status_1) {
