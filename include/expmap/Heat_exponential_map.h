@@ -1192,12 +1192,23 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::integrate_distance(int s, Wor
   std::size_t lowest = 0;
   for (std::size_t i = 0; i < kept; ++i)
     if (ws.potential[i] < ws.potential[lowest]) lowest = i;
-  if (ws.potential[lowest] - at_source < -0.5 * m_indexed.arrays.mean_edge_length)
+  if (ws.potential[lowest] - at_source < -0.5 * m_indexed.arrays.mean_edge_length) {
+    // Intrinsic Delaunay flips cannot remove an obtuse angle opposite a
+    // boundary edge. Where that breaks the heat (ALSTOM_TEST4's strips),
+    // neither a larger time factor nor --repair helped: the geodesic
+    // methods are the way out.
+    const std::string cause =
+        m_options.laplacian == Laplacian_mode::direct
+            ? "on this mesh's non-Delaunay triangles; use Laplacian_mode::intrinsic_delaunay (the "
+              "default) or a larger time factor"
+            : "here, although the Laplacian is intrinsic Delaunay (obtuse angles opposite "
+              "boundary edges, which edge flips cannot remove, can cause this); map this source "
+              "with DGPC or the exact method";
     throw Computation_error(
         "the heat distance from source vertex " + std::to_string(m_indexed.arrays.to_original(s)) +
         " is smallest at vertex " + std::to_string(m_indexed.arrays.to_original(ws.region[lowest])) +
-        ", not at the source: the heat diffusion is not positive on this mesh's non-Delaunay "
-        "triangles; use Laplacian_mode::intrinsic_delaunay (the default) or a larger time factor");
+        ", not at the source: the heat diffusion is not positive " + cause);
+  }
   for (double& phi : ws.potential) phi = std::max(0.0, phi - at_source);
   return stats;
 }
