@@ -48,7 +48,6 @@ struct Compute_arguments {
   std::optional<std::size_t> vertex_count;
   std::string method = "heat";
   std::optional<double> time_factor;
-  std::optional<double> distance_time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
   std::optional<std::string> factor_precision;  // "double" or "single"
@@ -234,8 +233,6 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       method_given = true;
     } else if (name == "--time-factor") {
       positive_real(a.time_factor);
-    } else if (name == "--distance-time-factor") {
-      positive_real(a.distance_time_factor);
     } else if (name == "--laplacian") {
       one_of(a.laplacian, "direct", "intrinsic-delaunay");
     } else if (name == "--vertex-area") {

@@ -86,7 +86,6 @@ using Heat = expmap::Heat_exponential_map<Mesh>;
 expmap::Heat_options heat_options(const Compute_arguments& a) {
   expmap::Heat_options options;
   if (a.time_factor) options.time_factor = *a.time_factor;
-  if (a.distance_time_factor) options.distance_time_factor = *a.distance_time_factor;
   if (a.laplacian == std::string("intrinsic-delaunay"))
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
@@ -127,8 +126,6 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   std::ostringstream d;
   // Short enough for the SVG caption's one line.
   d << "heat (m = " << options.time_factor;
-  if (options.distance_time_factor && *options.distance_time_factor != options.time_factor)
-    d << ", distance m = " << *options.distance_time_factor;
   d << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT")
     << (options.vertex_area == expmap::Vertex_area::barycentric ? ", barycentric areas" : "")
@@ -348,12 +345,6 @@ std::string map_options_help() {
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
-       "  --distance-time-factor T  heat only: a diffusion time of its own for the\n"
-       "                       distance (one more factorization); --time-factor then\n"
-       "                       sets the angles' time. --time-factor 50\n"
-       "                       --distance-time-factor 10 gives more accurate angles on\n"
-       "                       finely meshed smooth surfaces (doc/time_factor.md)\n"
-       "                       (default: the --time-factor)\n"
        "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
@@ -400,7 +391,7 @@ std::string map_options_help() {
 
 std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-         "                      [--method M] [--time-factor T] [--distance-time-factor T]\n"
+         "                      [--method M] [--time-factor T]\n"
          "                      [--laplacian L] [--vertex-area A]\n"
          "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
@@ -427,7 +418,7 @@ std::string compute_help() {
 std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--distance-time-factor T] [--laplacian L] [--vertex-area A]\n"
+         "                    [--laplacian L] [--vertex-area A]\n"
          "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                    [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
@@ -551,11 +542,11 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 // costly part: its settings apply to it, and the outputs' folders exist.
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
-  if (!method.takes_heat_options && (a.time_factor || a.distance_time_factor || a.laplacian ||
+  if (!method.takes_heat_options && (a.time_factor || a.laplacian ||
                                      a.vertex_area || a.factor_precision || a.query_threads ||
                                      a.angles || a.near_source_blend))
     throw Usage_error(
-        "--time-factor, --distance-time-factor, --laplacian, --vertex-area, "
+        "--time-factor, --laplacian, --vertex-area, "
         "--factor-precision, --query-threads, --angles and --near-source-blend apply only to "
         "--method heat");
   for (const auto& output : a.outputs) {

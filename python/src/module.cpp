@@ -369,7 +369,7 @@ void bind_heat(py::module_& m) {
       "    local = heat.compute(0, fraction=0.05)\n"
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
-                    std::optional<double> distance_time_factor, py::handle laplacian,
+                    py::handle laplacian,
                     py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double region_growth,
                     double pruning_tolerance, double poisson_compression_tolerance,
@@ -377,7 +377,6 @@ void bind_heat(py::module_& m) {
                     int query_threads) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
-          options.distance_time_factor = distance_time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
           options.vertex_area = enum_argument<expmap::Vertex_area>(vertex_area, "vertex_area");
           options.factor_precision =
@@ -397,7 +396,6 @@ void bind_heat(py::module_& m) {
         }),
         py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("time_factor") = defaults.time_factor,
-        py::arg("distance_time_factor") = defaults.distance_time_factor,
         py::arg("laplacian") = defaults.laplacian,
         py::arg("vertex_area") = defaults.vertex_area,
         py::arg("factor_precision") = defaults.factor_precision,
@@ -414,8 +412,6 @@ void bind_heat(py::module_& m) {
         "DiscreteExponentialMap).\n\n"
         "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
         "    larger is smoother.\n"
-        "distance_time_factor: time factor of the heat the distance comes from,\n"
-        "    when it should differ (one more factorization); None: time_factor.\n"
         "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
         "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
         "    heat step's mass matrix.\n"
@@ -449,10 +445,7 @@ void bind_heat(py::module_& m) {
   add_queries(c);
   c.def_property_readonly(
       "time_step", [](const Bound& b) { return b.method->time_step(); },
-      "Diffusion time t of the heat the angles come from.");
-  c.def_property_readonly(
-      "distance_time_step", [](const Bound& b) { return b.method->distance_time_step(); },
-      "Diffusion time of the heat the distance comes from.");
+      "Diffusion time t = time_factor * h^2.");
   c.def_property_readonly(
       "mean_edge_length", [](const Bound& b) { return b.method->mean_edge_length(); },
       "Mean edge length h of the mesh.");

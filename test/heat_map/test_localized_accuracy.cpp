@@ -378,10 +378,10 @@ BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
       compare(one, two, 1000, expmap::Patch::geodesic_radius(radius), "torus, radius patch");
     }
   }
-  expmap::Heat_options logarithmic, distance_time;
+  expmap::Heat_options logarithmic, gradient;
   logarithmic.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
-  distance_time.distance_time_factor = 2.0;
-  for (const expmap::Heat_options& options : {logarithmic, distance_time}) {
+  gradient.angle_estimator = expmap::Angle_estimator::heat_gradient;
+  for (const expmap::Heat_options& options : {logarithmic, gradient}) {
     expmap::Heat_options with_two = options;
     with_two.query_threads = 2;
     const expmap::Heat_exponential_map<Surface_mesh> one(sphere, options), two(sphere, with_two);

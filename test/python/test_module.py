@@ -235,7 +235,7 @@ def test_bad_meshes_raise_value_error(cactus, method):
 def test_bad_options_raise_value_error(cactus):
     _, V, F = cactus
     for options in ({"time_factor": 0.0}, {"time_factor": float("nan")}, {"time_factor": -1.0},
-                    {"distance_time_factor": float("inf")}, {"region_growth": 0.5},
+                    {"time_factor": float("inf")}, {"region_growth": 0.5},
                     {"pruning_tolerance": -1.0}, {"poisson_compression_tolerance": 1e-6},
                     {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None},
                     {"query_threads": 0}, {"query_threads": 3}):

@@ -200,23 +200,6 @@ std::vector<std::string> csv_column(const fs::path& path, int k) {
   return column;
 }
 
-BOOST_AUTO_TEST_CASE(a_distance_time_factor_keeps_the_distances_of_that_time) {
-  // Angles from t = 50 h^2 with distances from t = 10 h^2: the distances
-  // are those of the default (m = 10), not those of m = 50.
-  const std::string query = "compute " + file("grid.off") + " --source 24 --vertices 20";
-  BOOST_TEST_REQUIRE(run(query + " -o " + file("m10.csv")) == 0, "stderr: " << err());
-  BOOST_TEST_REQUIRE(
-      run(query + " --time-factor 50 --distance-time-factor 10 -o " + file("split.csv")) == 0,
-      "stderr: " << err());
-  BOOST_TEST(out().find("distance m = 10") != std::string::npos, out());
-  BOOST_TEST_REQUIRE(run(query + " --time-factor 50 -o " + file("m50.csv")) == 0,
-                     "stderr: " << err());
-  const auto m10 = csv_column(dir / "m10.csv", 1);
-  BOOST_TEST_REQUIRE(m10.size() == 20u);
-  BOOST_TEST(csv_column(dir / "split.csv", 1) == m10, boost::test_tools::per_element());
-  BOOST_TEST((csv_column(dir / "m50.csv", 1) != m10));
-}
-
 BOOST_AUTO_TEST_CASE(single_precision_factors_give_distances_to_float_round_off) {
   const std::string query = "compute " + file("grid.off") + " --source 24 --vertices 20";
   BOOST_TEST_REQUIRE(run(query + " -o " + file("double.csv")) == 0, "stderr: " << err());
@@ -260,7 +243,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--source", "--radius", "--fraction", "--vertices", "--method", "--time-factor",
-        "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision", "--angles",
+        "--laplacian", "--vertex-area", "--factor-precision", "--angles",
         "--query-threads", "--near-source-blend",
         "--reference",
         "--no-triangulate", "--repair", "--output"})
@@ -303,8 +286,8 @@ BOOST_AUTO_TEST_CASE(usage_errors_exit_with_status_2) {
   check_error(grid + " --source 0 --vertices 10 --method no-such-method" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --angles sideways" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dem --angles quadratic-fit" + csv, 2);
-  check_error(grid + " --source 0 --vertices 10 --distance-time-factor 0" + csv, 2);
-  check_error(grid + " --source 0 --vertices 10 --method dgpc --distance-time-factor 1" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --time-factor 0" + csv, 2);
+  check_error(grid + " --source 0 --vertices 10 --method dgpc --time-factor 1" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dem --near-source-blend 1,2" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --factor-precision half" + csv, 2);
   check_error(grid + " --source 0 --vertices 10 --method dgpc --factor-precision single" + csv, 2);
@@ -462,7 +445,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
   const std::string help = out();
   for (const char* option :
        {"--sources", "--threads", "--radius", "--fraction", "--vertices", "--method",
-        "--time-factor", "--distance-time-factor", "--laplacian", "--vertex-area", "--factor-precision",
+        "--time-factor", "--laplacian", "--vertex-area", "--factor-precision",
         "--query-threads", "--angles",
         "--near-source-blend", "--reference",
         "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
