@@ -97,8 +97,8 @@ enum class Poisson_regularization {
 /// Settings fixed at precomputation (they change the factorizations).
 struct Heat_options {
   /// Diffusion time t = time_factor * h^2, h the mean edge length of the
-  /// input mesh. Larger values give smoother maps; see the manual for the
-  /// measurements behind the default.
+  /// input mesh. Larger values give smoother maps; doc/time_factor.md has
+  /// the measurements behind the default.
   double time_factor = 10.0;
   /// Time factor of the heat solve the distance is integrated from, when it
   /// should differ from the one the angles are read from (a smaller value
@@ -113,8 +113,8 @@ struct Heat_options {
   Laplacian_mode laplacian = Laplacian_mode::intrinsic_delaunay;
   /// The heat step's mass matrix, on the triangulation the Laplacian is
   /// built on. The mixed Voronoi area gave 4-43% smaller angle errors on
-  /// jittered analytic surfaces and the same on real meshes (manual,
-  /// section 4).
+  /// jittered analytic surfaces and the same on real meshes
+  /// (doc/decisions.md).
   Vertex_area vertex_area = Vertex_area::mixed_voronoi;
   /// How the Poisson system of the distance step is made definite.
   Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
@@ -702,7 +702,7 @@ class Heat_exponential_map
   Solve_statistics solve_source_heat_at_least(int s, double threshold, bool retry,
                                               std::size_t& kept, Workspace& ws) const;
   // Step 1 (distance part) without candidates (finds_region_largest_first;
-  // manual section 2, steps 3 and 4): the source heat solved, or its search
+  // manual section 2, step 2): the source heat solved, or its search
   // continued (`retry`), until the region for a patch `growth` times larger
   // is known; sets `kept` to its size.
   Solve_statistics solve_region_largest_first(int s, const Patch& patch, std::size_t target,
@@ -723,7 +723,7 @@ class Heat_exponential_map
   // The candidates at `rows` with a neighbour outside the candidates, into
   // ws.cut_short_at.
   void edge_of_candidates(const std::vector<std::size_t>& rows, Workspace& ws) const;
-  // Step 4 for a region cut short: grows the candidates where the region
+  // Manual step 2 for a region cut short: grows the candidates where the region
   // touches their edge (at most targeted_widening_rounds rounds of
   // rings), else everywhere to widened_candidate_excess times the region;
   // extends the source heat and chooses the region (of `kept` vertices)
