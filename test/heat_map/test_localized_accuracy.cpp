@@ -97,7 +97,7 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error) {
 // Edge lengths vary on this mesh, and the breadth-first candidates of these
 // sources cut the heat's level sets short at 5%: their queries grow the
 // candidates around the cut-short vertices and extend the source heat to
-// them (step 4 of the manual).
+// them (manual, section 2, step 2).
 BOOST_AUTO_TEST_CASE(refined_elephant_cutoff_error_with_widened_candidates) {
   const Surface_mesh mesh = load_mesh<Surface_mesh>("refined_elephant.off");
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(refined_elephant_cutoff_error_with_widened_candidates) {
 }
 
 // A radius patch finds its region largest first down to the heat a plane
-// carries to its region's radius (manual, section 2, step 3). On this mesh
+// carries to its region's radius (manual, section 2, step 2). On this mesh
 // the vertex density varies by an order of magnitude, so the region's size
 // follows the heat, not a count: the cut-off error stays as small as a
 // count patch's, and the patch holds every vertex the whole-mesh map puts
