@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(same_regularization_agrees_to_1e_9) {
 BOOST_AUTO_TEST_CASE(exact_pinning_differs_only_by_cgal_regularization) {
   // CGAL's 1e-8 per face corner shifts its distances by a smooth O(1e-4)
   // relative amount on a 26k-vertex mesh; our default pins one vertex
-  // instead and is exact. The bound is measured (see doc/accuracy.md).
+  // instead and is exact. The bound is measured.
   Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
   for (std::size_t source : {0u, 4321u}) {
     const Comparison c =

@@ -141,7 +141,7 @@ BOOST_AUTO_TEST_CASE(refined_elephant_radius_patches_down_to_a_heat) {
 // region, manual section 2, step 5), and the query retries on a region
 // twice as large. The retry is not what keeps a cut-off error below 1%:
 // of 150 random sources at 1% on this mesh, 60 exceed it when 45 of them
-// retry and 63 when one does (doc/performance.md, 2026-11-24).
+// retry and 63 when one does (measured with expmap-bench).
 // A retry continues the first attempt's heat solve, so its map is the one a
 // first attempt on the doubled region computes (`region_growth` 4, whose
 // wider margin, 1.7 radii, source 2's doubled region holds too).
