@@ -107,6 +107,7 @@ inline Solve_statistics widen_candidates(const Context& c, std::size_t target, d
                                          bool& whole_component, Workspace& ws) {
   Solve_statistics stats;
   auto take_new_candidates = [&] {
+    ++stats.candidate_widenings;
     whole_component = ws.candidates.size() == component;
     stats += extend_source_heat(c, ws);
     choose_region(whole_component ? ws.candidates.size() : kept, ws);
