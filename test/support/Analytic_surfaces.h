@@ -1,21 +1,22 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_ANALYTIC_SURFACES_H
-#define EXPMAP_ANALYTIC_SURFACES_H
-
-/// \file Analytic_surfaces.h
-/// Generators of analytic test meshes (sphere, planar grids, height fields,
-/// cylinder, cone) and the exact exponential maps (geodesic polar
-/// coordinates) of the surfaces for which they are known in closed form.
-///
-/// Every generator returns a `Triangle_soup` whose triangles are oriented
-/// counter-clockwise seen from the outside (for planar meshes and height
-/// fields: seen from +z). All generators are deterministic; the only random
-/// operation, `flip_random_edges()`, takes a seed and uses `std::mt19937`
-/// with its own (portable) shuffling, so it gives the same mesh on every
-/// platform and standard library. `soup_to_mesh()` turns a soup into any
-/// CGAL `MutableFaceGraph` (Surface_mesh, Polyhedron_3, ...) keeping the
-/// vertex order.
+//
+// Test geometry, shared by the test suites and the evaluation programs
+// (benchmark/evaluation); not part of the library. Generators of analytic
+// meshes (sphere, planar grids, height fields, cylinder, cone) and the exact
+// exponential maps (geodesic polar coordinates) of the surfaces for which
+// they are known in closed form.
+//
+// Every generator returns a `Triangle_soup` whose triangles are oriented
+// counter-clockwise seen from the outside (for planar meshes and height
+// fields: seen from +z). All generators are deterministic; the only random
+// operation, `flip_random_edges()`, takes a seed and uses `std::mt19937`
+// with its own (portable) shuffling, so it gives the same mesh on every
+// platform and standard library. `soup_to_mesh()` turns a soup into any
+// CGAL `MutableFaceGraph` (Surface_mesh, Polyhedron_3, ...) keeping the
+// vertex order.
+#ifndef EXPMAP_TEST_ANALYTIC_SURFACES_H
+#define EXPMAP_TEST_ANALYTIC_SURFACES_H
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -33,10 +34,7 @@
 #include <utility>
 #include <vector>
 
-namespace expmap {
-
-/// \addtogroup PkgExpmapAnalytic
-/// @{
+namespace expmap_analytic {
 
 /// A triangle mesh as a polygon soup: an array of points and an array of
 /// triangles given by indices into `points`.
@@ -67,8 +65,7 @@ struct Polar {
   double theta_unrotated = 0;  ///< polar angle from `e1`, in (-pi, pi]
 };
 
-namespace internal {
-namespace analytic {
+namespace detail {
 
 using Vec3 = std::array<double, 3>;
 
@@ -192,8 +189,7 @@ inline double gaussian_bump_quadrature(double rho, double amplitude, double sigm
   return sum;
 }
 
-}  // namespace analytic
-}  // namespace internal
+}  // namespace detail
 
 // ---------------------------------------------------------------------------
 // Generators
@@ -216,7 +212,7 @@ inline double gaussian_bump_quadrature(double rho, double amplitude, double sigm
 /// \param radius sphere radius, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(subdivisions >= 0 && subdivisions <= 9,
              "make_icosphere: subdivisions must be in [0, 9] (got " +
                  std::to_string(subdivisions) + ")");
@@ -277,8 +273,8 @@ inline std::size_t grid_vertex_index(int nx, int i, int j) {
 /// four diagonals meet there).
 /// \throws std::invalid_argument unless nx and ny are even and positive
 inline std::size_t grid_origin_vertex(int nx, int ny) {
-  internal::analytic::require(nx > 0 && ny > 0 && nx % 2 == 0 && ny % 2 == 0,
-                              "grid_origin_vertex: nx and ny must be even and positive");
+  detail::require(nx > 0 && ny > 0 && nx % 2 == 0 && ny % 2 == 0,
+                  "grid_origin_vertex: nx and ny must be even and positive");
   return grid_vertex_index(nx, nx / 2, ny / 2);
 }
 
@@ -305,7 +301,7 @@ inline std::size_t grid_origin_vertex(int nx, int ny) {
 /// \param height extent along y, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " +
                                      std::to_string(nx) + ", " + std::to_string(ny) + ")");
   A::require_positive(width, "make_grid", "width");
@@ -343,7 +339,7 @@ inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
 /// \param edge edge length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_equilateral_grid(int rings, double edge) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(rings >= 1, "make_equilateral_grid: rings must be at least 1 (got " +
                              std::to_string(rings) + ")");
   A::require_positive(edge, "make_equilateral_grid", "edge");
@@ -422,7 +418,7 @@ inline Triangle_soup make_equilateral_grid(int rings, double edge) {
 /// \throws std::invalid_argument if fraction is outside [0, 1], an index is
 ///         out of range, or a directed edge is used by two triangles
 inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsigned seed) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(fraction >= 0.0 && fraction <= 1.0,
              "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) +
                  ")");
@@ -526,7 +522,7 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
 /// \param sx,sy,sz scale factors, positive and finite
 /// \throws std::invalid_argument if a factor is not positive
 inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, double sz) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require_positive(sx, "scale_anisotropically", "sx");
   A::require_positive(sy, "scale_anisotropically", "sy");
   A::require_positive(sz, "scale_anisotropically", "sz");
@@ -538,8 +534,7 @@ inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, dou
 }
 
 // Height field z = f(x, y) on make_grid(n, n, 2 half_width, 2 half_width).
-namespace internal {
-namespace analytic {
+namespace detail {
 
 template <class Height>
 Triangle_soup make_height_field(int n, double half_width, Height f, const char* function) {
@@ -551,8 +546,7 @@ Triangle_soup make_height_field(int n, double half_width, Height f, const char* 
   return soup;
 }
 
-}  // namespace analytic
-}  // namespace internal
+}  // namespace detail
 
 /// Gaussian bump: the height field z = amplitude * exp(-(x^2 + y^2) / (2 sigma^2))
 /// over the square [-half_width, half_width]^2, sampled on the grid of
@@ -570,11 +564,11 @@ Triangle_soup make_height_field(int n, double half_width, Height f, const char* 
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitude,
                                         double sigma) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require_finite(amplitude, "make_gaussian_bump", "amplitude");
   A::require_positive(sigma, "make_gaussian_bump", "sigma");
   const double inv = 1.0 / (2.0 * sigma * sigma);
-  return internal::analytic::make_height_field(
+  return detail::make_height_field(
       n, half_width,
       [=](double x, double y) { return amplitude * std::exp(-(x * x + y * y) * inv); },
       "make_gaussian_bump");
@@ -593,8 +587,8 @@ inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitu
 /// \param amplitude amplitude of the sine product, finite
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
-  internal::analytic::require_finite(amplitude, "make_saddle", "amplitude");
-  return internal::analytic::make_height_field(
+  detail::require_finite(amplitude, "make_saddle", "amplitude");
+  return detail::make_height_field(
       n, half_width, [=](double x, double y) { return amplitude * std::sin(x) * std::sin(y); },
       "make_saddle");
 }
@@ -618,7 +612,7 @@ inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
 /// \param length cylinder length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cylinder(int around, int along, double radius, double length) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(around >= 3, "make_cylinder: around must be at least 3 (got " +
                               std::to_string(around) + ")");
   A::require(along >= 1, "make_cylinder: along must be at least 1 (got " +
@@ -666,7 +660,7 @@ inline Triangle_soup make_cylinder(int around, int along, double radius, double 
 /// \param length slant length of the generators, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cone(int around, int along, double apex_angle, double length) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   const double pi = std::acos(-1.0);
   A::require(around >= 3,
              "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
@@ -701,7 +695,7 @@ inline Triangle_soup make_cone(int around, int along, double apex_angle, double 
 /// smallest index.
 /// \throws std::invalid_argument if the soup has no points
 inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<double, 3>& p) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(!soup.points.empty(), "closest_vertex: the soup has no points");
   std::size_t best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
@@ -736,7 +730,7 @@ inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<do
 ///         range, or the soup is not a polygon mesh
 template <class PolygonMesh>
 void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
   std::vector<std::array<std::size_t, 3>> polygons;
   polygons.reserve(soup.triangles.size());
@@ -774,7 +768,7 @@ void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
 inline Polar sphere_exponential_map(const std::array<double, 3>& source,
                                     const std::array<double, 3>& p, double radius,
                                     const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require_positive(radius, "sphere_exponential_map", "radius");
   const A::Vec3 n = A::normalized(source, "sphere_exponential_map: source");
   const A::Vec3 q = A::normalized(p, "sphere_exponential_map: p");
@@ -798,7 +792,7 @@ inline Polar sphere_exponential_map(const std::array<double, 3>& source,
 inline Polar plane_exponential_map(const std::array<double, 3>& source,
                                    const std::array<double, 3>& p,
                                    const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   const A::Vec3 d = {{p[0] - source[0], p[1] - source[1], 0.0}};
   Polar result;
   result.r = std::hypot(d[0], d[1]);
@@ -824,7 +818,7 @@ inline Polar plane_exponential_map(const std::array<double, 3>& source,
 inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
                                       const std::array<double, 3>& p, double radius,
                                       const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require_positive(radius, "cylinder_exponential_map", "radius");
   A::require(std::hypot(source[0], source[1]) > 0 && std::hypot(p[0], p[1]) > 0,
              "cylinder_exponential_map: points must not lie on the axis");
@@ -855,7 +849,7 @@ inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
 ///
 /// \throws std::invalid_argument if rho is negative or sigma not positive
 inline double gaussian_bump_meridian_length(double rho, double amplitude, double sigma) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   A::require(std::isfinite(rho) && rho >= 0,
              "gaussian_bump_meridian_length: rho must be non-negative and finite");
   A::require_finite(amplitude, "gaussian_bump_meridian_length", "amplitude");
@@ -890,7 +884,7 @@ inline double gaussian_bump_meridian_length(double rho, double amplitude, double
 /// \throws std::invalid_argument if sigma is not positive or e1 is zero or vertical
 inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, double amplitude,
                                            double sigma, const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
+  namespace A = detail;
   const double rho = std::hypot(p[0], p[1]);
   Polar result;
   result.r = gaussian_bump_meridian_length(rho, amplitude, sigma);
@@ -900,8 +894,6 @@ inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, doubl
   return result;
 }
 
-/// @}
+}  // namespace expmap_analytic
 
-}  // namespace expmap
-
-#endif  // EXPMAP_ANALYTIC_SURFACES_H
+#endif  // EXPMAP_TEST_ANALYTIC_SURFACES_H
