@@ -21,6 +21,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <expmap/internal/Vector3.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -67,18 +69,19 @@ struct Polar {
 
 namespace detail {
 
-using Vec3 = std::array<double, 3>;
+// The library's double 3-vectors (std::array<double, 3>, the type of the
+// soup's points) and their algebra. The generators and maps below bring
+// them into scope with `using namespace detail`.
+using expmap::internal::Vector3;
+using expmap::internal::operator+;
+using expmap::internal::operator-;
+using expmap::internal::operator*;
+using expmap::internal::cross;
+using expmap::internal::dot;
+using expmap::internal::norm;
+using expmap::internal::squared_norm;
 
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline Vec3 add(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
-inline Vec3 scale(const Vec3& a, double s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
-inline bool is_finite(const Vec3& a) {
+inline bool is_finite(const Vector3& a) {
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
@@ -102,24 +105,25 @@ inline void require_vertex_budget(double count, const char* function) {
 }
 
 /// Unit vector along `v`; throws if `v` is (numerically) zero or not finite.
-inline Vec3 normalized(const Vec3& v, const std::string& what) {
+inline Vector3 normalized(const Vector3& v, const std::string& what) {
   const double length = norm(v);
   require(std::isfinite(length) && length > 0, what + " must be a non-zero finite vector");
-  return scale(v, 1.0 / length);
+  return (1.0 / length) * v;
 }
 
 /// Polar angle of the tangent vector `d` at a point of unit normal `n`,
 /// measured from `e1` (projected onto the tangent plane) counter-clockwise
 /// about `n`.
-inline double tangent_angle(const Vec3& d, const Vec3& n, const Vec3& e1, const char* function) {
+inline double tangent_angle(const Vector3& d, const Vector3& n, const Vector3& e1,
+                            const char* function) {
   require(is_finite(e1), std::string(function) + ": e1 must be finite");
-  const Vec3 e1_tangent = sub(e1, scale(n, dot(e1, n)));
+  const Vector3 e1_tangent = e1 - dot(e1, n) * n;
   const double e1_norm = norm(e1);
   require(e1_norm > 0 && norm(e1_tangent) > 1e-12 * e1_norm,
           std::string(function) +
               ": e1 must not be zero or parallel to the surface normal at the source");
-  const Vec3 u = scale(e1_tangent, 1.0 / norm(e1_tangent));
-  const Vec3 v = cross(n, u);
+  const Vector3 u = (1.0 / norm(e1_tangent)) * e1_tangent;
+  const Vector3 v = cross(n, u);
   return std::atan2(dot(d, v), dot(d, u));
 }
 
@@ -212,20 +216,20 @@ inline double gaussian_bump_quadrature(double rho, double amplitude, double sigm
 /// \param radius sphere radius, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
-  namespace A = detail;
-  A::require(subdivisions >= 0 && subdivisions <= 9,
-             "make_icosphere: subdivisions must be in [0, 9] (got " +
-                 std::to_string(subdivisions) + ")");
-  A::require_positive(radius, "make_icosphere", "radius");
+  using namespace detail;
+  require(
+      subdivisions >= 0 && subdivisions <= 9,
+      "make_icosphere: subdivisions must be in [0, 9] (got " + std::to_string(subdivisions) + ")");
+  require_positive(radius, "make_icosphere", "radius");
 
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   Triangle_soup soup;
   const std::size_t final_vertices = 10 * (std::size_t(1) << (2 * subdivisions)) + 2;
   soup.points.reserve(final_vertices);
-  const A::Vec3 ico[12] = {{{-1, t, 0}}, {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}},
+  const Vector3 ico[12] = {{{-1, t, 0}}, {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}},
                            {{0, -1, t}}, {{0, 1, t}},  {{0, -1, -t}}, {{0, 1, -t}},
                            {{t, 0, -1}}, {{t, 0, 1}},  {{-t, 0, -1}}, {{-t, 0, 1}}};
-  for (const A::Vec3& p : ico) soup.points.push_back(A::normalized(p, "icosahedron vertex"));
+  for (const Vector3& p : ico) soup.points.push_back(normalized(p, "icosahedron vertex"));
   soup.triangles = {{{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}}, {{0, 10, 11}},
                     {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}},
                     {{3, 9, 4}},  {{3, 4, 2}},  {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},
@@ -235,12 +239,12 @@ inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
     std::unordered_map<std::uint64_t, int> midpoint;
     midpoint.reserve(soup.triangles.size() * 3 / 2);
     auto middle = [&](int a, int b) {
-      const std::uint64_t key = a < b ? A::directed_key(a, b) : A::directed_key(b, a);
+      const std::uint64_t key = a < b ? directed_key(a, b) : directed_key(b, a);
       const auto found = midpoint.find(key);
       if (found != midpoint.end()) return found->second;
-      const A::Vec3 m = A::add(soup.points[std::size_t(a)], soup.points[std::size_t(b)]);
+      const Vector3 m = soup.points[std::size_t(a)] + soup.points[std::size_t(b)];
       const int index = static_cast<int>(soup.points.size());
-      soup.points.push_back(A::normalized(m, "edge midpoint"));
+      soup.points.push_back(normalized(m, "edge midpoint"));
       midpoint.emplace(key, index);
       return index;
     };
@@ -256,7 +260,7 @@ inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
     soup.triangles.swap(finer);
   }
   if (radius != 1.0)
-    for (auto& p : soup.points) p = A::scale(p, radius);
+    for (auto& p : soup.points) p = radius * p;
   return soup;
 }
 
@@ -301,12 +305,12 @@ inline std::size_t grid_origin_vertex(int nx, int ny) {
 /// \param height extent along y, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
-  namespace A = detail;
-  A::require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " +
-                                     std::to_string(nx) + ", " + std::to_string(ny) + ")");
-  A::require_positive(width, "make_grid", "width");
-  A::require_positive(height, "make_grid", "height");
-  A::require_vertex_budget(2.0 * (double(nx) + 1) * (double(ny) + 1), "make_grid");
+  using namespace detail;
+  require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " + std::to_string(nx) +
+                                  ", " + std::to_string(ny) + ")");
+  require_positive(width, "make_grid", "width");
+  require_positive(height, "make_grid", "height");
+  require_vertex_budget(2.0 * (double(nx) + 1) * (double(ny) + 1), "make_grid");
 
   Triangle_soup soup;
   soup.points.reserve(std::size_t(nx + 1) * std::size_t(ny + 1));
@@ -318,10 +322,9 @@ inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
     }
   }
   soup.triangles.reserve(2 * std::size_t(nx) * std::size_t(ny));
-  A::triangulate_lattice(
+  triangulate_lattice(
       nx, ny, nx / 2 + ny / 2,
-      [nx](int i, int j) { return static_cast<int>(grid_vertex_index(nx, i, j)); },
-      soup.triangles);
+      [nx](int i, int j) { return static_cast<int>(grid_vertex_index(nx, i, j)); }, soup.triangles);
   return soup;
 }
 
@@ -339,12 +342,12 @@ inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
 /// \param edge edge length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_equilateral_grid(int rings, double edge) {
-  namespace A = detail;
-  A::require(rings >= 1, "make_equilateral_grid: rings must be at least 1 (got " +
-                             std::to_string(rings) + ")");
-  A::require_positive(edge, "make_equilateral_grid", "edge");
-  A::require_vertex_budget(6.0 * double(rings) * double(rings) + 3.0 * rings + 1,
-                           "make_equilateral_grid");
+  using namespace detail;
+  require(rings >= 1,
+          "make_equilateral_grid: rings must be at least 1 (got " + std::to_string(rings) + ")");
+  require_positive(edge, "make_equilateral_grid", "edge");
+  require_vertex_budget(6.0 * double(rings) * double(rings) + 3.0 * rings + 1,
+                        "make_equilateral_grid");
 
   // Axial lattice coordinates (a, b): position a * (1, 0) + b * (1/2, sqrt(3)/2).
   const int d[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
@@ -418,26 +421,25 @@ inline Triangle_soup make_equilateral_grid(int rings, double edge) {
 /// \throws std::invalid_argument if fraction is outside [0, 1], an index is
 ///         out of range, or a directed edge is used by two triangles
 inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsigned seed) {
-  namespace A = detail;
-  A::require(fraction >= 0.0 && fraction <= 1.0,
-             "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) +
-                 ")");
+  using namespace detail;
+  require(fraction >= 0.0 && fraction <= 1.0,
+          "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) + ")");
   const int n = static_cast<int>(soup.points.size());
   std::unordered_map<std::uint64_t, int> face_of;  // directed edge (u, v) -> face
   face_of.reserve(3 * soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const auto& t = soup.triangles[f];
     for (int k = 0; k < 3; ++k) {
-      A::require(t[k] >= 0 && t[k] < n, "flip_random_edges: vertex index out of range");
-      A::require(t[k] != t[(k + 1) % 3], "flip_random_edges: degenerate triangle");
-      const bool inserted = face_of.emplace(A::directed_key(t[k], t[(k + 1) % 3]), int(f)).second;
-      A::require(inserted,
-                 "flip_random_edges: a directed edge is used twice (non-manifold or "
-                 "inconsistently oriented soup)");
+      require(t[k] >= 0 && t[k] < n, "flip_random_edges: vertex index out of range");
+      require(t[k] != t[(k + 1) % 3], "flip_random_edges: degenerate triangle");
+      const bool inserted = face_of.emplace(directed_key(t[k], t[(k + 1) % 3]), int(f)).second;
+      require(inserted,
+              "flip_random_edges: a directed edge is used twice (non-manifold or "
+              "inconsistently oriented soup)");
     }
   }
   auto face_at = [&](int u, int v) {
-    const auto it = face_of.find(A::directed_key(u, v));
+    const auto it = face_of.find(directed_key(u, v));
     return it == face_of.end() ? -1 : it->second;
   };
   auto opposite = [&](int f, int u, int v) {
@@ -456,29 +458,29 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
     const auto& pb = soup.points[std::size_t(b)];
     const auto& pc = soup.points[std::size_t(c)];
     const auto& pd = soup.points[std::size_t(d)];
-    const A::Vec3 n1 = A::cross(A::sub(pb, pa), A::sub(pc, pa));
-    const A::Vec3 n2 = A::cross(A::sub(pa, pb), A::sub(pd, pb));
-    const double l1 = A::norm(n1), l2 = A::norm(n2);
+    const Vector3 n1 = cross(pb - pa, pc - pa);
+    const Vector3 n2 = cross(pa - pb, pd - pb);
+    const double l1 = norm(n1), l2 = norm(n2);
     if (!(l1 > 0) || !(l2 > 0)) return false;
-    const A::Vec3 normal = A::add(A::scale(n1, 1.0 / l1), A::scale(n2, 1.0 / l2));
-    const double ln = A::norm(normal);
+    const Vector3 normal = (1.0 / l1) * n1 + (1.0 / l2) * n2;
+    const double ln = norm(normal);
     if (!(ln > 1e-12)) return false;  // the two triangles fold onto each other
-    auto positive = [&](const A::Vec3& p, const A::Vec3& q, const A::Vec3& r) {
-      const A::Vec3 u = A::sub(q, p), v = A::sub(r, p);
-      return A::dot(A::cross(u, v), normal) > 1e-10 * ln * A::norm(u) * A::norm(v);
+    auto positive = [&](const Vector3& p, const Vector3& q, const Vector3& r) {
+      const Vector3 u = q - p, v = r - p;
+      return dot(cross(u, v), normal) > 1e-10 * ln * norm(u) * norm(v);
     };
     if (!positive(pa, pd, pc) || !positive(pd, pb, pc)) return false;
     if (!apply) return true;
     soup.triangles[std::size_t(f1)] = {{a, d, c}};
     soup.triangles[std::size_t(f2)] = {{d, b, c}};
-    face_of.erase(A::directed_key(a, b));
-    face_of.erase(A::directed_key(b, a));
-    face_of[A::directed_key(a, d)] = f1;
-    face_of[A::directed_key(d, c)] = f1;
-    face_of[A::directed_key(c, a)] = f1;
-    face_of[A::directed_key(d, b)] = f2;
-    face_of[A::directed_key(b, c)] = f2;
-    face_of[A::directed_key(c, d)] = f2;
+    face_of.erase(directed_key(a, b));
+    face_of.erase(directed_key(b, a));
+    face_of[directed_key(a, d)] = f1;
+    face_of[directed_key(d, c)] = f1;
+    face_of[directed_key(c, a)] = f1;
+    face_of[directed_key(d, b)] = f2;
+    face_of[directed_key(b, c)] = f2;
+    face_of[directed_key(c, d)] = f2;
     return true;
   };
 
@@ -496,7 +498,7 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
 
   std::mt19937 generator(seed);
   for (std::size_t i = candidates.size() - 1; i > 0; --i) {
-    const std::size_t j = A::uniform_below(generator, static_cast<std::uint32_t>(i + 1));
+    const std::size_t j = uniform_below(generator, static_cast<std::uint32_t>(i + 1));
     std::swap(candidates[i], candidates[j]);
   }
   std::vector<char> done(candidates.size(), 0);
@@ -522,10 +524,10 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
 /// \param sx,sy,sz scale factors, positive and finite
 /// \throws std::invalid_argument if a factor is not positive
 inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, double sz) {
-  namespace A = detail;
-  A::require_positive(sx, "scale_anisotropically", "sx");
-  A::require_positive(sy, "scale_anisotropically", "sy");
-  A::require_positive(sz, "scale_anisotropically", "sz");
+  using namespace detail;
+  require_positive(sx, "scale_anisotropically", "sx");
+  require_positive(sy, "scale_anisotropically", "sy");
+  require_positive(sz, "scale_anisotropically", "sz");
   for (auto& p : soup.points) {
     p[0] *= sx;
     p[1] *= sy;
@@ -564,9 +566,9 @@ Triangle_soup make_height_field(int n, double half_width, Height f, const char* 
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitude,
                                         double sigma) {
-  namespace A = detail;
-  A::require_finite(amplitude, "make_gaussian_bump", "amplitude");
-  A::require_positive(sigma, "make_gaussian_bump", "sigma");
+  using namespace detail;
+  require_finite(amplitude, "make_gaussian_bump", "amplitude");
+  require_positive(sigma, "make_gaussian_bump", "sigma");
   const double inv = 1.0 / (2.0 * sigma * sigma);
   return detail::make_height_field(
       n, half_width,
@@ -612,14 +614,14 @@ inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
 /// \param length cylinder length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cylinder(int around, int along, double radius, double length) {
-  namespace A = detail;
-  A::require(around >= 3, "make_cylinder: around must be at least 3 (got " +
-                              std::to_string(around) + ")");
-  A::require(along >= 1, "make_cylinder: along must be at least 1 (got " +
-                             std::to_string(along) + ")");
-  A::require_positive(radius, "make_cylinder", "radius");
-  A::require_positive(length, "make_cylinder", "length");
-  A::require_vertex_budget(2.0 * double(around) * (double(along) + 1), "make_cylinder");
+  using namespace detail;
+  require(around >= 3,
+          "make_cylinder: around must be at least 3 (got " + std::to_string(around) + ")");
+  require(along >= 1,
+          "make_cylinder: along must be at least 1 (got " + std::to_string(along) + ")");
+  require_positive(radius, "make_cylinder", "radius");
+  require_positive(length, "make_cylinder", "length");
+  require_vertex_budget(2.0 * double(around) * (double(along) + 1), "make_cylinder");
 
   const double two_pi = 2.0 * std::acos(-1.0);
   Triangle_soup soup;
@@ -633,7 +635,7 @@ inline Triangle_soup make_cylinder(int around, int along, double radius, double 
   }
   soup.triangles.reserve(2 * std::size_t(around) * std::size_t(along));
   // Parity along/2: the source vertex (along/2) * around has valence 8.
-  A::triangulate_lattice(
+  triangulate_lattice(
       around, along, along / 2, [around](int i, int j) { return j * around + i % around; },
       soup.triangles);
   return soup;
@@ -660,16 +662,14 @@ inline Triangle_soup make_cylinder(int around, int along, double radius, double 
 /// \param length slant length of the generators, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cone(int around, int along, double apex_angle, double length) {
-  namespace A = detail;
+  using namespace detail;
   const double pi = std::acos(-1.0);
-  A::require(around >= 3,
-             "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
-  A::require(along >= 1,
-             "make_cone: along must be at least 1 (got " + std::to_string(along) + ")");
-  A::require(std::isfinite(apex_angle) && apex_angle > 0 && apex_angle < pi,
-             "make_cone: apex_angle must be in (0, pi) (got " + std::to_string(apex_angle) + ")");
-  A::require_positive(length, "make_cone", "length");
-  A::require_vertex_budget(2.0 * double(around) * double(along) + 1, "make_cone");
+  require(around >= 3, "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
+  require(along >= 1, "make_cone: along must be at least 1 (got " + std::to_string(along) + ")");
+  require(std::isfinite(apex_angle) && apex_angle > 0 && apex_angle < pi,
+          "make_cone: apex_angle must be in (0, pi) (got " + std::to_string(apex_angle) + ")");
+  require_positive(length, "make_cone", "length");
+  require_vertex_budget(2.0 * double(around) * double(along) + 1, "make_cone");
 
   const double alpha = 0.5 * apex_angle;
   Triangle_soup soup;
@@ -686,7 +686,7 @@ inline Triangle_soup make_cone(int around, int along, double apex_angle, double 
   soup.triangles.reserve(std::size_t(around) * std::size_t(2 * along - 1));
   auto ring = [around](int i, int j) { return 1 + (j - 1) * around + i % around; };
   for (int i = 0; i < around; ++i) soup.triangles.push_back({{0, ring(i + 1, 1), ring(i, 1)}});
-  A::triangulate_lattice(
+  triangulate_lattice(
       around, along - 1, 0, [&](int i, int j) { return ring(i, j + 1); }, soup.triangles);
   return soup;
 }
@@ -695,13 +695,12 @@ inline Triangle_soup make_cone(int around, int along, double apex_angle, double 
 /// smallest index.
 /// \throws std::invalid_argument if the soup has no points
 inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<double, 3>& p) {
-  namespace A = detail;
-  A::require(!soup.points.empty(), "closest_vertex: the soup has no points");
+  using namespace detail;
+  require(!soup.points.empty(), "closest_vertex: the soup has no points");
   std::size_t best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
-    const A::Vec3 d = A::sub(soup.points[i], p);
-    const double squared = A::dot(d, d);
+    const double squared = squared_norm(soup.points[i] - p);
     if (squared < best_distance) {
       best_distance = squared;
       best = i;
@@ -730,18 +729,18 @@ inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<do
 ///         range, or the soup is not a polygon mesh
 template <class PolygonMesh>
 void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
-  namespace A = detail;
-  A::require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
+  using namespace detail;
+  require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
   std::vector<std::array<std::size_t, 3>> polygons;
   polygons.reserve(soup.triangles.size());
   const int n = static_cast<int>(soup.points.size());
   for (const auto& t : soup.triangles) {
     for (int k = 0; k < 3; ++k)
-      A::require(t[k] >= 0 && t[k] < n, "soup_to_mesh: vertex index out of range");
+      require(t[k] >= 0 && t[k] < n, "soup_to_mesh: vertex index out of range");
     polygons.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
   }
-  A::require(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
-             "soup_to_mesh: the soup is not a consistently oriented manifold polygon mesh");
+  require(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
+          "soup_to_mesh: the soup is not a consistently oriented manifold polygon mesh");
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, polygons, mesh);
 }
 
@@ -768,16 +767,16 @@ void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
 inline Polar sphere_exponential_map(const std::array<double, 3>& source,
                                     const std::array<double, 3>& p, double radius,
                                     const std::array<double, 3>& e1) {
-  namespace A = detail;
-  A::require_positive(radius, "sphere_exponential_map", "radius");
-  const A::Vec3 n = A::normalized(source, "sphere_exponential_map: source");
-  const A::Vec3 q = A::normalized(p, "sphere_exponential_map: p");
-  const double angle = std::atan2(A::norm(A::cross(n, q)), A::dot(n, q));
+  using namespace detail;
+  require_positive(radius, "sphere_exponential_map", "radius");
+  const Vector3 n = normalized(source, "sphere_exponential_map: source");
+  const Vector3 q = normalized(p, "sphere_exponential_map: p");
+  const double angle = std::atan2(norm(cross(n, q)), dot(n, q));
   Polar result;
   result.r = radius * angle;
   // The log direction is the tangential part of q; its normal part does not
   // change the angle.
-  const double theta = A::tangent_angle(q, n, e1, "sphere_exponential_map");
+  const double theta = tangent_angle(q, n, e1, "sphere_exponential_map");
   result.theta_unrotated = angle > 0 ? theta : 0.0;
   return result;
 }
@@ -792,11 +791,11 @@ inline Polar sphere_exponential_map(const std::array<double, 3>& source,
 inline Polar plane_exponential_map(const std::array<double, 3>& source,
                                    const std::array<double, 3>& p,
                                    const std::array<double, 3>& e1) {
-  namespace A = detail;
-  const A::Vec3 d = {{p[0] - source[0], p[1] - source[1], 0.0}};
+  using namespace detail;
+  const Vector3 d = {{p[0] - source[0], p[1] - source[1], 0.0}};
   Polar result;
   result.r = std::hypot(d[0], d[1]);
-  const double theta = A::tangent_angle(d, {{0.0, 0.0, 1.0}}, e1, "plane_exponential_map");
+  const double theta = tangent_angle(d, {{0.0, 0.0, 1.0}}, e1, "plane_exponential_map");
   result.theta_unrotated = result.r > 0 ? theta : 0.0;
   return result;
 }
@@ -818,22 +817,22 @@ inline Polar plane_exponential_map(const std::array<double, 3>& source,
 inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
                                       const std::array<double, 3>& p, double radius,
                                       const std::array<double, 3>& e1) {
-  namespace A = detail;
-  A::require_positive(radius, "cylinder_exponential_map", "radius");
-  A::require(std::hypot(source[0], source[1]) > 0 && std::hypot(p[0], p[1]) > 0,
-             "cylinder_exponential_map: points must not lie on the axis");
+  using namespace detail;
+  require_positive(radius, "cylinder_exponential_map", "radius");
+  require(std::hypot(source[0], source[1]) > 0 && std::hypot(p[0], p[1]) > 0,
+          "cylinder_exponential_map: points must not lie on the axis");
   const double pi = std::acos(-1.0);
   const double phi_s = std::atan2(source[1], source[0]);
   double dphi = std::atan2(p[1], p[0]) - phi_s;
   if (dphi > pi) dphi -= 2 * pi;
   if (dphi <= -pi) dphi += 2 * pi;
   const double u = radius * dphi, v = p[2] - source[2];
-  const A::Vec3 n = {{std::cos(phi_s), std::sin(phi_s), 0.0}};
-  const A::Vec3 azimuthal = {{-std::sin(phi_s), std::cos(phi_s), 0.0}};
-  const A::Vec3 d = A::add(A::scale(azimuthal, u), {{0.0, 0.0, v}});
+  const Vector3 n = {{std::cos(phi_s), std::sin(phi_s), 0.0}};
+  const Vector3 azimuthal = {{-std::sin(phi_s), std::cos(phi_s), 0.0}};
+  const Vector3 d = u * azimuthal + Vector3{{0.0, 0.0, v}};
   Polar result;
   result.r = std::hypot(u, v);
-  const double theta = A::tangent_angle(d, n, e1, "cylinder_exponential_map");
+  const double theta = tangent_angle(d, n, e1, "cylinder_exponential_map");
   result.theta_unrotated = result.r > 0 ? theta : 0.0;
   return result;
 }
@@ -849,20 +848,20 @@ inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
 ///
 /// \throws std::invalid_argument if rho is negative or sigma not positive
 inline double gaussian_bump_meridian_length(double rho, double amplitude, double sigma) {
-  namespace A = detail;
-  A::require(std::isfinite(rho) && rho >= 0,
-             "gaussian_bump_meridian_length: rho must be non-negative and finite");
-  A::require_finite(amplitude, "gaussian_bump_meridian_length", "amplitude");
-  A::require_positive(sigma, "gaussian_bump_meridian_length", "sigma");
+  using namespace detail;
+  require(std::isfinite(rho) && rho >= 0,
+          "gaussian_bump_meridian_length: rho must be non-negative and finite");
+  require_finite(amplitude, "gaussian_bump_meridian_length", "amplitude");
+  require_positive(sigma, "gaussian_bump_meridian_length", "sigma");
   if (rho == 0) return 0;
   // Panels about sigma / 4 wide, and narrow enough for steep flanks.
   const double steepness = 1.0 + std::abs(amplitude) / sigma;
   std::size_t panels =
       static_cast<std::size_t>(std::ceil(std::min(4.0 * rho / sigma * steepness, 1e4))) + 1;
-  double previous = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
+  double previous = gaussian_bump_quadrature(rho, amplitude, sigma, panels);
   for (int refinement = 0; refinement < 12; ++refinement) {
     panels *= 2;
-    const double current = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
+    const double current = gaussian_bump_quadrature(rho, amplitude, sigma, panels);
     if (std::abs(current - previous) <= 1e-13 * current) return current;
     previous = current;
   }
@@ -884,12 +883,12 @@ inline double gaussian_bump_meridian_length(double rho, double amplitude, double
 /// \throws std::invalid_argument if sigma is not positive or e1 is zero or vertical
 inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, double amplitude,
                                            double sigma, const std::array<double, 3>& e1) {
-  namespace A = detail;
+  using namespace detail;
   const double rho = std::hypot(p[0], p[1]);
   Polar result;
   result.r = gaussian_bump_meridian_length(rho, amplitude, sigma);
-  const double theta = A::tangent_angle({{p[0], p[1], 0.0}}, {{0.0, 0.0, 1.0}}, e1,
-                                        "gaussian_bump_exponential_map");
+  const double theta =
+      tangent_angle({{p[0], p[1], 0.0}}, {{0.0, 0.0, 1.0}}, e1, "gaussian_bump_exponential_map");
   result.theta_unrotated = rho > 0 ? theta : 0.0;
   return result;
 }
