@@ -9,6 +9,7 @@
 /// distance field at them; point location in the xy projection of a height
 /// field, to place reference points given by (x, y).
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Statistics.h"

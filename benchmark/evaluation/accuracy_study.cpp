@@ -6,6 +6,7 @@
 // union-jack meshes) at three mean edge lengths; E_d and E_a of every method
 // against analytic references or geodesics shot with Boost.Odeint.
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Formatting.h"

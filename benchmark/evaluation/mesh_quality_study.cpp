@@ -6,6 +6,7 @@
 // errors of every method against the exact map of the plane, and a picture
 // of the heat map on the three grids.
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Figures.h"

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "test_support.h"
 

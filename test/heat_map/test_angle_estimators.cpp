@@ -26,6 +26,7 @@
 #include <map>
 #include <random>
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "test_support.h"
 

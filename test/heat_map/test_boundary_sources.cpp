@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "test_support.h"
 

@@ -9,6 +9,7 @@
 
 #include <random>
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 #include "test_support.h"
 

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Tests of the analytic test-mesh generators and their exact exponential
-// maps (test/support/Analytic_surfaces.h).
+// maps (test/support/Analytic_surfaces.h, Analytic_exponential_maps.h).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+#include "Analytic_exponential_maps.h"
 #include "Analytic_surfaces.h"
 
 namespace {
