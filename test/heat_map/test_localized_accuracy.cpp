@@ -2,7 +2,6 @@
 // only; against the whole-mesh heat distances (the same method with the
 // Poisson problem solved on the whole mesh) the cut-off error must stay
 // small: mean below 1% of the patch radius in the inner 90% of the patch.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Heat_exponential_map.h>
 
 #include <boost/test/unit_test.hpp>
@@ -13,6 +12,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
 // meshes above never reach that fallback.
 BOOST_AUTO_TEST_CASE(anisotropic_grid_cutoff_error_after_widening_everywhere) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_grid(60, 600, 1.0, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(60, 600, 1.0, 1.0), mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   const std::size_t n = num_vertices(mesh);
   check_cutoff(heat, "anisotropic grid", {n / 2 + 3, n / 3 + 7}, {0.05});
@@ -194,7 +194,7 @@ BOOST_AUTO_TEST_CASE(anisotropic_grid_cutoff_error_after_widening_everywhere) {
 
 BOOST_AUTO_TEST_CASE(sphere_cutoff_error) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_icosphere(5, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(5, 1.0), mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   check_cutoff(heat, "sphere (10,242 vertices)", {0, 5000});
 }
@@ -207,7 +207,7 @@ void make_jittered_torus(Surface_mesh& mesh) {
   const double major = 3.0, minor = 1.0, step = 2 * M_PI / around;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> offset(-0.3 * step, 0.3 * step);
-  expmap::Triangle_soup torus;
+  expmap_analytic::Triangle_soup torus;
   for (int j = 0; j < along; ++j)
     for (int i = 0; i < around; ++i) {
       const double u = i * step + offset(rng), v = j * step + offset(rng);
@@ -220,7 +220,7 @@ void make_jittered_torus(Surface_mesh& mesh) {
       torus.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
       torus.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
-  expmap::soup_to_mesh(torus, mesh);
+  expmap_analytic::soup_to_mesh(torus, mesh);
 }
 
 // The largest change between two maps of the same patch, in distance
@@ -290,13 +290,14 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
 BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
   const int around = 8, along = 30000;
   const double spacing = 2 * M_PI / around;
-  expmap::Triangle_soup tube = expmap::make_cylinder(around, along, 1.0, spacing * along);
+  expmap_analytic::Triangle_soup tube =
+      expmap_analytic::make_cylinder(around, along, 1.0, spacing * along);
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> offset(-0.2 * spacing, 0.2 * spacing);
   for (auto& p : tube.points)
     for (double& x : p) x += offset(rng);
   Surface_mesh mesh;
-  expmap::soup_to_mesh(tube, mesh);
+  expmap_analytic::soup_to_mesh(tube, mesh);
   expmap::Heat_options unpruned_options;
   unpruned_options.pruning_tolerance = 0;
   const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
@@ -357,7 +358,7 @@ BOOST_AUTO_TEST_CASE(compressed_poisson_rows_change_nothing_but_the_work) {
 BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
   Surface_mesh torus, sphere;
   make_jittered_torus(torus);
-  expmap::soup_to_mesh(expmap::make_icosphere(5), sphere);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(5), sphere);
   expmap::Heat_options two_threads;
   two_threads.query_threads = 2;
   auto compare = [](const auto& one, const auto& two, std::size_t source,
@@ -400,7 +401,7 @@ BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
 
 BOOST_AUTO_TEST_CASE(query_threads_other_than_one_or_two_are_rejected) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(4, 4, 1.0, 1.0), mesh);
   for (const int threads : {0, 3, -1}) {
     expmap::Heat_options options;
     options.query_threads = threads;
@@ -411,7 +412,7 @@ BOOST_AUTO_TEST_CASE(query_threads_other_than_one_or_two_are_rejected) {
 
 BOOST_AUTO_TEST_CASE(solve_tolerances_out_of_range_are_rejected) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_grid(4, 4, 1.0, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(4, 4, 1.0, 1.0), mesh);
   for (const double tolerance : {-1e-14, 1e-6, std::nan("")}) {
     expmap::Heat_options pruning, compression;
     pruning.pruning_tolerance = tolerance;
