@@ -13,7 +13,7 @@ namespace internal {
 // The dense kernels the triangular solves are made of, on row-major blocks
 // of W right-hand sides: a row's dot product with the solved values, and
 // four solved rows subtracted from the others at once, on the supernodes'
-// dense blocks (Localized_cholesky_solver).
+// dense blocks (Supernode_kernels).
 
 /// out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
 /// independent partial sums: without them every multiply-add waits for the

@@ -6,10 +6,10 @@
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Dense_row_kernels.h>
 #include <expmap/internal/Huge_page_allocator.h>
 #include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/Supernode_kernels.h>
 
 #include <algorithm>
 #include <array>
@@ -99,7 +99,7 @@ class Localized_cholesky_solver {
     std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
     std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
     std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
-    std::vector<int> m_kept;  // pruned solves: propagated columns or rows of a supernode
+    Supernode_kernels::Scratch m_kernel_scratch;
     // An extendable solve left in the block: its kernel width (0 if none)
     // and its number of columns; the entries of its supernodes before an
     // extension, and the supernodes the extension adds.
@@ -602,6 +602,7 @@ class Localized_cholesky_solver {
   Solve_statistics forward_substitution(const std::vector<Rhs_entry>& entries, Workspace& ws,
                                         std::uint32_t s, Pruning pruning) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     Solve_statistics stats;
     reach(entries.data(), entries.data() + entries.size(),
@@ -615,13 +616,12 @@ class Localized_cholesky_solver {
       if (pruning.enabled) {
         stats.factor_entries +=
             with_entries(sn, [&](const auto* entries) {
-              return forward_supernode_pruned<W>(entries, sn, first, ys, y, pruning.drop_below,
-                                                 ws.m_kept);
+              return kernels.forward_pruned<W>(entries, sn, first, ys, y, pruning.drop_below);
             });
         continue;
       }
-      with_entries(sn, [&](const auto* entries) { forward_supernode<W>(entries, sn, first, ys, y); });
-      stats.factor_entries += entries_of(sn, first);
+      with_entries(sn, [&](const auto* entries) { kernels.forward<W>(entries, sn, first, ys, y); });
+      stats.factor_entries += Supernode_kernels::entries_read(sn, first);
     }
     return stats;
   }
@@ -648,6 +648,7 @@ class Localized_cholesky_solver {
                                  std::vector<double>& values, Workspace& ws) const {
     const std::size_t count = stop.count;
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     const std::uint32_t s = ws.m_stamp;
     auto& frontier = ws.m_frontier;
@@ -677,12 +678,11 @@ class Localized_cholesky_solver {
       if (ws.m_largest_drop_below > 0) {
         stats.factor_entries +=
             with_entries(sn, [&](const auto* entries) {
-              return backward_supernode_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below,
-                                                  ws.m_kept);
+              return kernels.backward_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below);
             });
       } else {
-        with_entries(sn, [&](const auto* entries) { backward_supernode<1>(entries, sn, 0, ys, y); });
-        stats.factor_entries += entries_of(sn, 0);
+        with_entries(sn, [&](const auto* entries) { kernels.backward<1>(entries, sn, 0, ys, y); });
+        stats.factor_entries += Supernode_kernels::entries_read(sn, 0);
       }
       ws.m_backward_stamp[k] = s;
       ws.m_backward_entry[k] = 0;
@@ -718,6 +718,7 @@ class Localized_cholesky_solver {
                                std::size_t row_count, double* out, Workspace& ws,
                                Pruning pruning, bool keep, int width = W) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
     auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
 
@@ -735,15 +736,15 @@ class Localized_cholesky_solver {
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
       if (pruning.enabled) {
         stats.factor_entries += with_entries(sn, [&](const auto* entries) {
-          return backward_supernode_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
-                                              pruning.drop_below, ws.m_kept);
+          return kernels.backward_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
+                                            pruning.drop_below);
         });
         continue;
       }
       with_entries(sn, [&](const auto* entries) {
-        backward_supernode<W>(entries, sn, first, row_of(sn.first_column), y);
+        kernels.backward<W>(entries, sn, first, row_of(sn.first_column), y);
       });
-      stats.factor_entries += entries_of(sn, first);
+      stats.factor_entries += Supernode_kernels::entries_read(sn, first);
     }
 
     read_rows<W>(rows, row_count, out, ws, width);
@@ -787,6 +788,7 @@ class Localized_cholesky_solver {
   Solve_statistics extend_block(const int* rows, std::size_t row_count, double* out,
                                 Workspace& ws) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     Solve_statistics stats;
     ws.m_previous_entry.resize(ws.m_backward_nodes.size());
@@ -798,10 +800,10 @@ class Localized_cholesky_solver {
       const auto& sn = F.supernode[k];
       stats.backward_nodes += static_cast<std::size_t>(end - first);
       with_entries(sn, [&](const auto* entries) {
-        backward_supernode<W>(entries, sn, first,
-                              y + static_cast<std::size_t>(sn.first_column) * W, y, end);
+        kernels.backward<W>(entries, sn, first, y + static_cast<std::size_t>(sn.first_column) * W,
+                            y, end);
       });
-      stats.factor_entries += entries_of(sn, first, end);
+      stats.factor_entries += Supernode_kernels::entries_read(sn, first, end);
     };
     for (std::size_t i = ws.m_backward_nodes.size(); i-- > 0;) {
       const int k = ws.m_backward_nodes[i];
@@ -818,361 +820,16 @@ class Localized_cholesky_solver {
     return stats;
   }
 
+  // The kernels of this factor, working in `ws`.
+  Supernode_kernels kernels_in(Workspace& ws) const {
+    return Supernode_kernels(m_factor, m_inverse_diagonal.data(), ws.m_kernel_scratch);
+  }
+
   // Calls f with the entries array of supernode `sn` in its precision.
   template <class F>
   auto with_entries(const Supernodal_factor::Supernode& sn, F&& f) const
       -> decltype(f(std::declval<const double*>())) {
     return m_factor.with_entries(sn, std::forward<F>(f));
-  }
-
-  // out[j * W + w] -= sum over t < nbelow of l[t * stride + j] * y[rows[t] * W + w]
-  // for the C columns j of a supernode's rows below (row-major, `stride`
-  // columns per row): part of the back substitution.
-  template <int W, int C, class T>
-  static void subtract_below(const T* l, int stride, const int* rows, int nbelow,
-                             const double* y, double* out) {
-    std::array<std::array<double, W>, C> acc{};
-    for (int t = 0; t < nbelow; ++t) {
-      const T* lt = l + static_cast<std::size_t>(t) * stride;
-      const double* xt = y + static_cast<std::size_t>(rows[t]) * W;
-      for (int j = 0; j < C; ++j)
-        for (int w = 0; w < W; ++w) acc[j][w] += lt[j] * xt[w];
-    }
-    for (int j = 0; j < C; ++j)
-      for (int w = 0; w < W; ++w) out[j * W + w] -= acc[j][w];
-  }
-
-  // Forward substitution through one supernode from its column `first` on
-  // (the earlier ones are zero): the diagonal block row by row (a row of the
-  // row-major block is contiguous), then the rows below it, each one dot
-  // product. `ys` are the supernode's own rows of the block `y`.
-  template <int W, class T>
-  void forward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                         double* ys, double* y) const {
-    const auto& F = m_factor;
-    const T* diagonal = entries + sn.diagonal;
-    for (int r = first; r < sn.ncol; ++r) {
-      double* yr = ys + r * W;
-      subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-    }
-    const T* below = entries + sn.below;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0) {
-      const int run[2] = {first, sn.ncol};
-      return low_rank_forward<W>(below, sn, run, 2, ys, below_rows, y);
-    }
-    for (int t = 0; t < sn.nbelow; ++t)
-      subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
-                      y + static_cast<std::size_t>(below_rows[t]) * W);
-  }
-
-  // The forward update of the rows below kept as U V^T (rank r): y[rows[t]]
-  // -= U[t] (V^T ys), the columns of V^T taken from the [begin, end) pairs
-  // of `runs` (the columns propagated).
-  template <int W, class T>
-  static void low_rank_forward(const T* below, const Supernodal_factor::Supernode& sn,
-                               const int* runs, std::size_t run_values, const double* ys,
-                               const int* below_rows, double* y) {
-    const int r = sn.rank;
-    const T* U = below;
-    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
-    for (std::size_t q = 0; q < run_values; q += 2)
-      for (int c = runs[q]; c < runs[q + 1]; ++c) {
-        const T* v = V + static_cast<std::size_t>(c) * r;
-        const double* yc = ys + static_cast<std::size_t>(c) * W;
-        for (int j = 0; j < r; ++j)
-          for (int w = 0; w < W; ++w) z[j * W + w] += v[j] * yc[w];
-      }
-    for (int t = 0; t < sn.nbelow; ++t)
-      subtract_dot<W>(U + static_cast<std::size_t>(t) * r, z, 0, r,
-                      y + static_cast<std::size_t>(below_rows[t]) * W);
-  }
-
-  // The backward update from the rows below kept as U V^T: ys[c] -= V[c]
-  // (U^T x) for the columns c in [first, end), over the rows below
-  // `row(0)`, ..., `row(count - 1)` (the others taken as zero).
-  template <int W, class T, class Row>
-  static void low_rank_backward(const T* below, const Supernodal_factor::Supernode& sn,
-                                int first, int end, double* ys, const double* y,
-                                const int* below_rows, int count, Row row) {
-    const int r = sn.rank;
-    const T* U = below;
-    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
-    for (int i = 0; i < count; ++i) {
-      const int t = row(i);
-      const T* u = U + static_cast<std::size_t>(t) * r;
-      const double* x = y + static_cast<std::size_t>(below_rows[t]) * W;
-      for (int j = 0; j < r; ++j)
-        for (int w = 0; w < W; ++w) z[j * W + w] += u[j] * x[w];
-    }
-    for (int c = first; c < end; ++c)
-      subtract_dot<W>(V + static_cast<std::size_t>(c) * r, z, 0, r,
-                      ys + static_cast<std::size_t>(c) * W);
-  }
-
-  // Back substitution through one supernode, for its columns from `first`
-  // to `end` (all the rest by default; the columns from `end` on are solved
-  // already): the rows below it (already solved: they belong to ancestors)
-  // are subtracted, then the diagonal block is solved bottom-up, each solved
-  // row subtracted from the rows above it (row-contiguous in the row-major
-  // block).
-  template <int W, class T>
-  void backward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                          double* ys, const double* y, int end = -1) const {
-    if (end < 0) end = sn.ncol;
-    backward_below<W>(entries, sn, first, ys, y, end);
-    const T* diagonal = entries + sn.diagonal;
-    for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < end; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * ys[r * W + w];
-    }
-    // Four rows at a time: their own 4 x 4 triangle first, then the rows
-    // above them updated by all four in one pass (each row of ys read and
-    // written once per four rows of L instead of once per row).
-    int r = end - 1;
-    for (; r - 3 >= first; r -= 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      for (int k = 0; k < 4; ++k) {
-        const int row = r - k;
-        l[k] = diagonal + Supernodal_factor::triangle_row(row);
-        double* yr = ys + row * W;
-        const double inverse = m_inverse_diagonal[sn.first_column + row];
-        for (int w = 0; w < W; ++w) x[k][w] = yr[w] *= inverse;
-        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
-          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
-      }
-      subtract_four_rows<W>(l, x, first, r - 3, ys);
-    }
-    for (; r >= first; --r) {
-      double* yr = ys + r * W;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      std::array<double, W> xr;
-      for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < r; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
-    }
-  }
-
-  // Whether a row of the block is propagated by a pruned solve.
-  template <int W>
-  static bool above(const double* row, double drop_below) {
-    for (int w = 0; w < W; ++w)
-      if (std::abs(row[w]) > drop_below) return true;
-    return false;
-  }
-
-  // forward_supernode for a pruned solve: only the columns whose solved
-  // rows are above `drop_below` are propagated, to the later rows of the
-  // diagonal block and to the rows below. They are kept in `runs` as
-  // [begin, end) pairs (flattened): in a separator the columns near the
-  // right-hand side tend to be consecutive, so a dot product over a run is
-  // as contiguous as the unpruned one. Returns the factor entries read.
-  template <int W, class T>
-  std::size_t forward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
-                                       int first, double* ys, double* y, double drop_below,
-                                       std::vector<int>& runs) const {
-    const auto& F = m_factor;
-    const T* diagonal = entries + sn.diagonal;
-    runs.clear();
-    std::size_t kept = 0, read = 0;
-    for (int r = first; r < sn.ncol; ++r) {
-      double* yr = ys + r * W;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (std::size_t q = 0; q < runs.size(); q += 2)
-        subtract_dot<W>(l, ys, runs[q], runs[q + 1], yr);
-      read += kept + 1;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-      if (!above<W>(yr, drop_below)) continue;
-      ++kept;
-      if (!runs.empty() && runs.back() == r)
-        runs.back() = r + 1;
-      else
-        runs.insert(runs.end(), {r, r + 1});
-    }
-    if (runs.empty()) return read;
-    const T* below = entries + sn.below;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0) {
-      low_rank_forward<W>(below, sn, runs.data(), runs.size(), ys, below_rows, y);
-      return read + (kept + static_cast<std::size_t>(sn.nbelow)) * static_cast<std::size_t>(sn.rank);
-    }
-    for (int t = 0; t < sn.nbelow; ++t) {
-      const T* l = below + static_cast<std::size_t>(t) * sn.ncol;
-      double* target = y + static_cast<std::size_t>(below_rows[t]) * W;
-      for (std::size_t q = 0; q < runs.size(); q += 2)
-        subtract_dot<W>(l, ys, runs[q], runs[q + 1], target);
-    }
-    return read + kept * static_cast<std::size_t>(sn.nbelow);
-  }
-
-  // backward_supernode for a pruned solve: only the rows below (solved
-  // ancestors) and the rows of the diagonal block whose solutions are above
-  // `drop_below` are subtracted. Both go four rows of L at a time, as in the
-  // full kernel (each row of ys read and written once per four rows of L):
-  // the kept rows below in groups of four, the diagonal block in its groups
-  // of four rows with the solutions at or below the threshold propagated as
-  // zeros, and a group skipped when all four are. `kept` receives the rows
-  // below that are kept. Returns the factor entries read.
-  template <int W, class T>
-  std::size_t backward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
-                                        int first, double* ys, const double* y,
-                                        double drop_below, std::vector<int>& kept) const {
-    const auto& F = m_factor;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    kept.clear();
-    for (int t = 0; t < sn.nbelow; ++t)
-      if (above<W>(y + static_cast<std::size_t>(below_rows[t]) * W, drop_below)) kept.push_back(t);
-    const std::size_t width = static_cast<std::size_t>(sn.ncol - first);
-    std::size_t read = sn.rank >= 0 ? (kept.size() + width) * static_cast<std::size_t>(sn.rank)
-                                    : kept.size() * width;
-    if (sn.rank >= 0) {
-      low_rank_backward<W>(entries + sn.below, sn, first, sn.ncol, ys, y, below_rows,
-                           static_cast<int>(kept.size()),
-                           [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
-    } else if (static_cast<int>(kept.size()) == sn.nbelow) {
-      // Nothing to skip below: the register-blocked kernel of the full solve.
-      backward_below<W>(entries, sn, first, ys, y, sn.ncol);
-    } else {
-      subtract_rows_below<W>(entries, sn, first, ys, y, sn.ncol, static_cast<int>(kept.size()),
-                             [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
-    }
-    const T* diagonal = entries + sn.diagonal;
-    int r = sn.ncol - 1;
-    for (; r - 3 >= first; r -= 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      bool any = false;
-      for (int k = 0; k < 4; ++k) {
-        const int row = r - k;
-        l[k] = diagonal + Supernodal_factor::triangle_row(row);
-        double* yr = ys + row * W;
-        const double inverse = m_inverse_diagonal[sn.first_column + row];
-        for (int w = 0; w < W; ++w) yr[w] *= inverse;
-        ++read;
-        const bool kept_row = above<W>(yr, drop_below);
-        any = any || kept_row;
-        for (int w = 0; w < W; ++w) x[k][w] = kept_row ? yr[w] : 0.0;
-        if (!kept_row) continue;
-        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
-          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
-        read += static_cast<std::size_t>(3 - k);
-      }
-      if (!any) continue;
-      subtract_four_rows<W>(l, x, first, r - 3, ys);
-      read += 4 * static_cast<std::size_t>(r - 3 - first);
-    }
-    for (; r >= first; --r) {
-      double* yr = ys + r * W;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-      ++read;
-      if (!above<W>(yr, drop_below)) continue;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < r; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * yr[w];
-      read += static_cast<std::size_t>(r - first);
-    }
-    return read;
-  }
-
-  // The rows below a supernode (solved ancestors) subtracted from its rows
-  // from `first` on. Up to one block of columns: their sums in registers
-  // over all rows below (updating ys in memory once per row below would
-  // chain every update of a column through a store and a load). Wider:
-  // by rows (backward_below_by_rows), since a block at a time walks the
-  // row-major rows below once per block, a few entries from each row.
-  template <int W, class T>
-  void backward_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                      double* ys, const double* y, int end) const {
-    constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
-    const T* below = entries + sn.below;
-    const int* below_rows = m_factor.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0)
-      return low_rank_backward<W>(below, sn, first, end, ys, y, below_rows, sn.nbelow,
-                                  [](int i) { return i; });
-    if (end - first > block) return backward_below_by_rows<W>(entries, sn, first, ys, y, end);
-    int c = first;
-    for (; c + block <= end; c += block)
-      subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-    // The rest in halving blocks: each pass gathers every solved row below
-    // once, and most supernodes are narrower than a block.
-    if constexpr (block > 4) {
-      if (c + 4 <= end) {
-        subtract_below<W, 4>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-        c += 4;
-      }
-    }
-    if constexpr (block > 2) {
-      if (c + 2 <= end) {
-        subtract_below<W, 2>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-        c += 2;
-      }
-    }
-    for (; c < end; ++c)
-      subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-  }
-
-  // backward_below for more columns than a block: the rows below are read
-  // in memory order, four at a time, each group updating the columns'
-  // partial solutions in ys once (ys stays in the first-level cache). Per
-  // solve on a 711k-vertex mesh this read the rows below at about twice the
-  // speed of the blocked kernel (doc/performance.md).
-  template <int W, class T>
-  void backward_below_by_rows(const T* entries, const Supernodal_factor::Supernode& sn,
-                              int first, double* ys, const double* y, int end) const {
-    subtract_rows_below<W>(entries, sn, first, ys, y, end, sn.nbelow, [](int i) { return i; });
-  }
-
-  // The rows below a supernode numbered `row(0)`, ..., `row(count - 1)`
-  // (ascending) subtracted from its columns [first, end), four rows at a
-  // time: backward_below_by_rows takes them all, a pruned back substitution
-  // the kept ones.
-  template <int W, class T, class Row>
-  void subtract_rows_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                           double* ys, const double* y, int end, int count, Row row) const {
-    const T* below = entries + sn.below;
-    const int* below_rows = m_factor.row_index.data() + sn.below_rows;
-    const std::size_t stride = static_cast<std::size_t>(sn.ncol);
-    int i = 0;
-    for (; i + 4 <= count; i += 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      for (int k = 0; k < 4; ++k) {
-        const int t = row(i + k);
-        l[k] = below + static_cast<std::size_t>(t) * stride;
-        const double* xk = y + static_cast<std::size_t>(below_rows[t]) * W;
-        for (int w = 0; w < W; ++w) x[k][w] = xk[w];
-      }
-      subtract_four_rows<W>(l, x, first, end, ys);
-    }
-    for (; i < count; ++i) {
-      const int t = row(i);
-      const T* l = below + static_cast<std::size_t>(t) * stride;
-      std::array<double, W> a;
-      for (int w = 0; w < W; ++w) a[w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
-      for (int c = first; c < end; ++c)
-        for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * a[w];
-    }
-  }
-
-  // Entries of the supernode's columns from `first` on (to `end`) that a
-  // solve reads: rows below in low-rank form are r per row and column.
-  std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first,
-                                int end = -1) const {
-    if (end < 0) end = sn.ncol;
-    const std::size_t c = static_cast<std::size_t>(end - first);
-    const std::size_t diagonal = c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
-    const std::size_t nbelow = static_cast<std::size_t>(sn.nbelow);
-    if (sn.rank >= 0) return diagonal + (nbelow + c) * static_cast<std::size_t>(sn.rank);
-    return diagonal + nbelow * c;
   }
 
   void compute_tree_height() {
