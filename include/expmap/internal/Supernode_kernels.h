@@ -33,7 +33,8 @@ class Supernode_kernels {
   /// Scratch memory of the kernels, kept by the caller per query (a
   /// solver's workspace) so that no solve allocates once warm.
   struct Scratch {
-    std::vector<int> kept;  // pruned kernels: columns or rows propagated
+    std::vector<int> kept;         // pruned kernels: columns or rows propagated
+    std::vector<double> low_rank;  // the r x W products of low-rank rows below
   };
 
   /// Kernels on `factor`, whose inverse diagonal (1 / L(j, j) by column) is
@@ -353,7 +354,7 @@ class Supernode_kernels {
     const int r = sn.rank;
     const T* U = below;
     const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
+    double* z = zeroed_low_rank_scratch(static_cast<std::size_t>(r) * W);
     for (std::size_t q = 0; q < run_values; q += 2)
       for (int c = runs[q]; c < runs[q + 1]; ++c) {
         const T* v = V + static_cast<std::size_t>(c) * r;
@@ -375,7 +376,7 @@ class Supernode_kernels {
     const int r = sn.rank;
     const T* U = below;
     const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
+    double* z = zeroed_low_rank_scratch(static_cast<std::size_t>(r) * W);
     for (int i = 0; i < count; ++i) {
       const int t = row(i);
       const T* u = U + static_cast<std::size_t>(t) * r;
@@ -386,6 +387,12 @@ class Supernode_kernels {
     for (int c = first; c < end; ++c)
       subtract_dot<W>(V + static_cast<std::size_t>(c) * r, z, 0, r,
                       ys + static_cast<std::size_t>(c) * W);
+  }
+
+  // `size` zeros of the scratch, valid until the next low-rank update.
+  double* zeroed_low_rank_scratch(std::size_t size) {
+    m_scratch.low_rank.assign(size, 0.0);
+    return m_scratch.low_rank.data();
   }
 
   const Supernodal_factor& m_factor;
