@@ -30,7 +30,8 @@
 // per fraction and tau: median times, median factor entries read, and the
 // largest error over all sources of any returned value relative to itself
 // (rel) and relative to the largest value of its column (max-rel).
-// "query:" rows: solve_pruned_relative as a heat query would call it, with
+// "query:" rows: a pruned solve from a guess of its smallest value, checked
+// and solved again if the guess was too large (as a heat query does), with
 // --protocol-tolerance (1e-14). Source on candidates: the hint is the
 // previous source's heat at its source times exp(its decay rate * this
 // query's candidate radius) times --hint-safety (1e-10; a hint too small
@@ -172,6 +173,26 @@ void compare(const std::vector<double>& values, const std::vector<double>& exact
   }
 }
 
+// A pruned solve with drop_below = tau * `hint`, a guess of the smallest
+// magnitude it returns, checked as the solver's documentation advises: if
+// the guess was too large (drop_below above 2 tau times the smallest value
+// returned; 2 is room for its rounding), solved again with tau times that
+// value, which pruning the heat's nonnegative inverse only lowers. Sets
+// `solved_again` if it did.
+expmap::Solve_statistics solve_from_hint(const Localized_cholesky_solver& heat,
+                                         const std::vector<Rhs_entry>& rhs, int width,
+                                         const int* rows, std::size_t row_count, double* out,
+                                         Localized_cholesky_solver::Workspace& ws, double tau,
+                                         double hint, bool& solved_again) {
+  const double drop_below = tau * hint;
+  auto stats = heat.solve_pruned(rhs, width, rows, row_count, out, ws, drop_below);
+  const double smallest = Localized_cholesky_solver::smallest_magnitude(
+      out, row_count * static_cast<std::size_t>(width));
+  solved_again = drop_below > 2 * tau * smallest;
+  if (solved_again) stats += heat.solve_pruned(rhs, width, rows, row_count, out, ws, tau * smallest);
+  return stats;
+}
+
 void print_row(const char* what, double tolerance, const Solve_record& r) {
   char tol[32] = "full";
   if (tolerance > 0) std::snprintf(tol, sizeof tol, "%.0e", tolerance);
@@ -291,11 +312,12 @@ int main(int argc, char** argv) try {
       const double radius = tentative[nearest.back()];  // graph distance of the farthest row
       const double distance_hint =
           o.hint_safety * previous_at_source * std::exp(previous_rate * radius);
-      auto stats = heat->solve_pruned_relative(source_rhs, 1, nearest.data(), rows[0],
-                                               heat_values.data(), *ws, tau, distance_hint);
+      bool solved_again = false;
+      auto stats = solve_from_hint(*heat, source_rhs, 1, nearest.data(), rows[0],
+                                   heat_values.data(), *ws, tau, distance_hint, solved_again);
       const double smallest_heat =
           Localized_cholesky_solver::smallest_magnitude(heat_values.data(), heat_values.size());
-      distance_retries += tau * distance_hint > 2 * tau * smallest_heat;
+      distance_retries += solved_again;
       previous_at_source = heat_values[0];
       previous_rate = std::log(smallest_heat / heat_values[0]) / radius;
       const double star_hint =
@@ -303,13 +325,11 @@ int main(int argc, char** argv) try {
       protocol_distance.ms.push_back(watch.milliseconds());
       protocol_distance.entries.push_back(static_cast<double>(stats.factor_entries));
       watch.restart();
-      stats = heat->solve_pruned_relative(star_rhs, width, nearest.data(), rows[1],
-                                          star_values.data(), *ws, tau, star_hint);
+      stats = solve_from_hint(*heat, star_rhs, width, nearest.data(), rows[1], star_values.data(),
+                              *ws, tau, star_hint, solved_again);
       protocol_star.ms.push_back(watch.milliseconds());
       protocol_star.entries.push_back(static_cast<double>(stats.factor_entries));
-      star_retries += tau * star_hint >
-                      2 * tau * Localized_cholesky_solver::smallest_magnitude(star_values.data(),
-                                                                              star_values.size());
+      star_retries += solved_again;
       // The Poisson solve of the same query (not pruned: its solution does
       // not decay), with a right-hand side on the whole region, the hottest
       // 1/1.3 of the candidates (here the nearest): its cost depends only on

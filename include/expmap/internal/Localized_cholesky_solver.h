@@ -283,36 +283,6 @@ class Localized_cholesky_solver {
     return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
   }
 
-  /// A pruned solve that keeps every returned value accurate relative to
-  /// itself: `solve_pruned()` with drop_below = tolerance * smallest_hint,
-  /// `smallest_hint` a guess of the smallest magnitude this solve returns
-  /// (from an earlier solve; 0 for none, which solves without pruning). If
-  /// the guess was too large (drop_below > 2 * tolerance * the smallest
-  /// value returned), solves again with drop_below = tolerance * that value,
-  /// which can only be smaller than the true smallest one (pruning
-  /// lowers the values of a nonnegative inverse). Measured on the heat
-  /// system of a 2.85M-vertex mesh, tolerance 1e-16 keeps every value to
-  /// 3e-15 relative and 1e-12 does too (doc/paper_scale.md).
-  /// \returns the statistics of both solves if it solved twice; `out` holds
-  ///          the last one.
-  /// \pre tolerance and smallest_hint >= 0 and finite.
-  Solve_statistics solve_pruned_relative(const std::vector<Rhs_entry>& entries, int width,
-                                         const int* rows, std::size_t row_count, double* out,
-                                         Workspace& ws, double tolerance,
-                                         double smallest_hint) const {
-    if (!(tolerance >= 0) || !std::isfinite(tolerance) || !(smallest_hint >= 0) ||
-        !std::isfinite(smallest_hint))
-      throw std::invalid_argument(
-          "Localized_cholesky_solver: tolerance and smallest_hint must be >= 0 and finite");
-    const double drop_below = tolerance * smallest_hint;
-    Solve_statistics stats = solve_pruned(entries, width, rows, row_count, out, ws, drop_below);
-    const double smallest =
-        smallest_magnitude(out, row_count * static_cast<std::size_t>(width));
-    if (drop_below > 2 * tolerance * smallest)  // 2: room for rounding in `smallest`
-      stats += solve_pruned(entries, width, rows, row_count, out, ws, tolerance * smallest);
-    return stats;
-  }
-
   /// Smallest |value| among `count` values (infinity if there are none): the
   /// scale a pruned solve's `drop_below` is checked against.
   static double smallest_magnitude(const double* values, std::size_t count) {
