@@ -3,7 +3,7 @@
 //
 // expmap-pruned-bench: the heat method's precomputation phase by phase
 // (time and peak memory of each) and its heat solves with and without
-// pruning (Localized_cholesky_solver::solve_pruned), on one mesh.
+// pruning (Localized_cholesky_solver::solve with drop_below), on one mesh.
 //
 //   expmap-pruned-bench --mesh FILE [--fractions LIST] [--sources N]
 //                       [--seed S] [--time-factor M] [--tolerances LIST]
@@ -185,11 +185,11 @@ expmap::Solve_statistics solve_from_hint(const Localized_cholesky_solver& heat,
                                          Localized_cholesky_solver::Workspace& ws, double tau,
                                          double hint, bool& solved_again) {
   const double drop_below = tau * hint;
-  auto stats = heat.solve_pruned(rhs, width, rows, row_count, out, ws, drop_below);
+  auto stats = heat.solve(rhs, width, rows, row_count, out, ws, drop_below);
   const double smallest = Localized_cholesky_solver::smallest_magnitude(
       out, row_count * static_cast<std::size_t>(width));
   solved_again = drop_below > 2 * tau * smallest;
-  if (solved_again) stats += heat.solve_pruned(rhs, width, rows, row_count, out, ws, tau * smallest);
+  if (solved_again) stats += heat.solve(rhs, width, rows, row_count, out, ws, tau * smallest);
   return stats;
 }
 
@@ -293,8 +293,8 @@ int main(int argc, char** argv) try {
         smallest_ratio = std::min(smallest_ratio, smallest / largest);
         for (std::size_t k = 0; k < o.tolerances.size(); ++k) {
           watch.restart();
-          const auto p = heat->solve_pruned(*rhs[solve], widths[solve], nearest.data(), rows[solve],
-                                            pruned.data(), *ws, o.tolerances[k] * smallest);
+          const auto p = heat->solve(*rhs[solve], widths[solve], nearest.data(), rows[solve],
+                                     pruned.data(), *ws, o.tolerances[k] * smallest);
           auto& record = (*pruned_record[solve])[k];
           record.ms.push_back(watch.milliseconds());
           record.entries.push_back(static_cast<double>(p.factor_entries));

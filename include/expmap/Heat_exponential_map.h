@@ -948,9 +948,9 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_source_heat_below(int s
     return distance_heat().solve_extendable(ws.rhs, 1, ws.candidates.data(),
                                             ws.candidates.size(), ws.heat.data(),
                                             source_heat_workspace(ws));
-  return distance_heat().solve_extendable_pruned(ws.rhs, 1, ws.candidates.data(),
-                                                 ws.candidates.size(), ws.heat.data(),
-                                                 source_heat_workspace(ws), ws.heat_drop_below);
+  return distance_heat().solve_extendable(ws.rhs, 1, ws.candidates.data(),
+                                          ws.candidates.size(), ws.heat.data(),
+                                          source_heat_workspace(ws), ws.heat_drop_below);
 }
 
 template <class TM, class VPM, class S>
@@ -1230,8 +1230,8 @@ Solve_statistics Heat_exponential_map<TM, VPM, S>::solve_star_heat(
     return m_heat_local.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
                               out.heat.data(), solver);
   Solve_statistics stats =
-      m_heat_local.solve_pruned(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
-                                out.heat.data(), solver, drop_below);
+      m_heat_local.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
+                         out.heat.data(), solver, drop_below);
   // The gradient columns change sign, so pruning need not lower them: the
   // check is that every value read stays far above the threshold.
   if (drop_below > m_pruning_tolerance * smallest_star_value(width, out.heat))

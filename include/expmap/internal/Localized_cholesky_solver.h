@@ -190,12 +190,41 @@ class Localized_cholesky_solver {
 
   /// Solves A X = B where B has `width` columns given by its nonzero
   /// `entries` (rows of A, duplicates are summed), and writes X(rows[i], c)
-  /// to `out[i * width + c]`. Exact: the same numbers as a full solve.
+  /// to `out[i * width + c]`. With `drop_below` = 0 the solve is exact: the
+  /// same numbers as a full solve.
+  ///
+  /// With `drop_below` > 0 the solve is pruned: an entry of the forward
+  /// solution y (L y = P b) or of the back solution x whose magnitude is at
+  /// most `drop_below` in every column of the block is not propagated: the
+  /// entries it would update are computed as if it were zero (its own value
+  /// is still computed and returned if requested).
+  ///
+  /// Why it pays: the dense separators at the top of the elimination tree
+  /// span the whole mesh, and every solve walks them; but the solution of a
+  /// well-conditioned system such as the heat system M + tL (and the
+  /// forward solution y with it) decays exponentially with the distance from
+  /// the right-hand side, so on most of a separator's columns it is far
+  /// below anything the caller reads, and the work of those columns
+  /// (a column of L each) is skipped.
+  ///
+  /// Choosing `drop_below`: an entry below the threshold changes the
+  /// returned values by about itself times the entries of L^-1 (at most
+  /// about 1 relative for the heat system, whose inverse factor is
+  /// nonnegative and diagonally dominated). To keep every returned value
+  /// accurate to a relative tolerance tau, pass tau times the smallest
+  /// magnitude among the requested rows (or a lower bound of it, e.g. from a
+  /// previous solve); `smallest_magnitude()` then checks the choice: the
+  /// pruning was consistent if drop_below <= tau * smallest_magnitude(out)
+  /// up to rounding (the pruned values are within tau of the full ones).
+  /// Systems whose solution does not decay (the Poisson system of the
+  /// distance step) gain nothing.
+  /// \pre drop_below >= 0 and finite (else std::invalid_argument).
   /// \returns what the solve touched.
   Solve_statistics solve(const std::vector<Rhs_entry>& entries, int width,
                          const int* rows, std::size_t row_count, double* out,
-                         Workspace& ws) const {
-    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{});
+                         Workspace& ws, double drop_below = 0) const {
+    check_drop_below(drop_below);
+    return solve_in_blocks(entries, width, rows, row_count, out, ws, drop_below);
   }
 
   /// As `solve()` (at most `max_block_width` columns), but keeps the
@@ -203,23 +232,18 @@ class Localized_cholesky_solver {
   /// rows, redoing neither the forward substitution nor the back substitution
   /// of the nodes already solved. The workspace stays busy until the next
   /// solve of any kind on it, or `release()`.
+  ///
+  /// Pruned (`drop_below` > 0), `extend()` then solves the new supernodes
+  /// in full, from the pruned values above them: the new rows' values carry
+  /// the pruning error of those values (at most about `drop_below`), so a
+  /// caller checking the choice of `drop_below` checks it on the extended
+  /// rows too.
+  /// \pre as `solve()`.
   Solve_statistics solve_extendable(const std::vector<Rhs_entry>& entries, int width,
                                     const int* rows, std::size_t row_count, double* out,
-                                    Workspace& ws) const {
-    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{});
-  }
-
-  /// `solve_extendable()` pruned as `solve_pruned()` prunes. `extend()`
-  /// then solves the new supernodes in full, from the pruned values above
-  /// them: the new rows' values carry the pruning error of those values
-  /// (at most about `drop_below`), so a caller checking the choice of
-  /// `drop_below` checks it on the extended rows too.
-  /// \pre drop_below >= 0 and finite.
-  Solve_statistics solve_extendable_pruned(const std::vector<Rhs_entry>& entries, int width,
-                                           const int* rows, std::size_t row_count, double* out,
-                                           Workspace& ws, double drop_below) const {
+                                    Workspace& ws, double drop_below = 0) const {
     check_drop_below(drop_below);
-    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
+    return solve_and_keep(entries, width, rows, row_count, out, ws, drop_below);
   }
 
   /// The solution of the last `solve_extendable()` on `ws` at `rows` (which
@@ -247,40 +271,6 @@ class Localized_cholesky_solver {
     with_open_width(ws, [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
     ws.m_largest_open = false;
-  }
-
-  /// As `solve()`, but an entry of the forward solution y (L y = P b) or of
-  /// the back solution x whose magnitude is at most `drop_below` in every
-  /// column of the block is not propagated: the entries it would update
-  /// are computed as if it were zero (its own value is still computed and
-  /// returned if requested). With `drop_below = 0` only exact zeros are
-  /// skipped and the result equals `solve()`'s.
-  ///
-  /// Why it pays: the dense separators at the top of the elimination tree
-  /// span the whole mesh, and every solve walks them; but the solution of a
-  /// well-conditioned system such as the heat system M + tL (and the
-  /// forward solution y with it) decays exponentially with the distance from
-  /// the right-hand side, so on most of a separator's columns it is far
-  /// below anything the caller reads, and the work of those columns
-  /// (a column of L each) is skipped.
-  ///
-  /// Choosing `drop_below`: an entry below the threshold changes the
-  /// returned values by about itself times the entries of L^-1 (at most
-  /// about 1 relative for the heat system, whose inverse factor is
-  /// nonnegative and diagonally dominated). To keep every returned value
-  /// accurate to a relative tolerance tau, pass tau times the smallest
-  /// magnitude among the requested rows (or a lower bound of it, e.g. from a
-  /// previous solve); `smallest_magnitude()` then checks the choice: the
-  /// pruning was consistent if drop_below <= tau * smallest_magnitude(out)
-  /// up to rounding (the pruned values are within tau of the full ones).
-  /// Systems whose solution does not decay (the Poisson system of the
-  /// distance step) gain nothing.
-  /// \pre drop_below >= 0 and finite.
-  Solve_statistics solve_pruned(const std::vector<Rhs_entry>& entries, int width,
-                                const int* rows, std::size_t row_count, double* out,
-                                Workspace& ws, double drop_below) const {
-    check_drop_below(drop_below);
-    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
   }
 
   /// Smallest |value| among `count` values (infinity if there are none): the
@@ -315,7 +305,7 @@ class Localized_cholesky_solver {
   /// either, and is not visited. The caller vouches for the matrix: this
   /// is not checked here.
   ///
-  /// With `drop_below` > 0 both substitutions are pruned as `solve_pruned()`
+  /// With `drop_below` > 0 both substitutions are pruned as `solve()`
   /// prunes them: pruning only lowers the values of a nonnegative inverse,
   /// by about `drop_below` at most, so the bounds and the order of the
   /// values are those of a full solve but for ties within that.
@@ -390,7 +380,7 @@ class Localized_cholesky_solver {
       y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
     ws.m_largest_drop_below = drop_below;
     Solve_statistics stats =
-        forward_substitution<1>(entries, ws, s, Pruning{drop_below > 0, drop_below});
+        forward_substitution<1>(entries, ws, s, drop_below);
     ws.m_backward_nodes.clear();
     ws.m_frontier.clear();
     for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
@@ -433,26 +423,21 @@ class Localized_cholesky_solver {
     return stats;
   }
 
-  // Whether and below what magnitude a solve stops propagating entries.
-  struct Pruning {
-    bool enabled = false;
-    double drop_below = 0;
-  };
-
   static void check_drop_below(double drop_below) {
     if (!(drop_below >= 0) || !std::isfinite(drop_below))
       throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
   }
 
-  // solve_extendable and solve_extendable_pruned: one block, kept in `ws`.
+  // solve_extendable: one block, kept in `ws`. Pruned if drop_below > 0,
+  // as are the others below.
   Solve_statistics solve_and_keep(const std::vector<Rhs_entry>& entries, int width,
                                   const int* rows, std::size_t row_count, double* out,
-                                  Workspace& ws, Pruning pruning) const {
+                                  Workspace& ws, double drop_below) const {
     if (width < 1 || width > max_block_width)
       throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
     const auto start = std::chrono::steady_clock::now();
     prepare(ws);
-    Solve_statistics stats = dispatch(entries, width, rows, row_count, out, ws, pruning, /*keep=*/true);
+    Solve_statistics stats = dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -460,7 +445,7 @@ class Localized_cholesky_solver {
 
   Solve_statistics solve_in_blocks(const std::vector<Rhs_entry>& entries, int width,
                                    const int* rows, std::size_t row_count, double* out,
-                                   Workspace& ws, Pruning pruning) const {
+                                   Workspace& ws, double drop_below) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
     const auto start = std::chrono::steady_clock::now();
     prepare(ws);
@@ -482,7 +467,7 @@ class Localized_cholesky_solver {
         chunk_out.assign(row_count * static_cast<std::size_t>(w), 0.0);
         target = chunk_out.data();
       }
-      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, pruning);
+      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, drop_below);
       total += s;
       if (width > max_block_width)
         for (std::size_t i = 0; i < row_count; ++i)
@@ -520,15 +505,15 @@ class Localized_cholesky_solver {
 
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
                             std::size_t row_count, double* out, Workspace& ws,
-                            Pruning pruning, bool keep = false) const {
-    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning, keep);
+                            double drop_below, bool keep = false) const {
+    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, drop_below, keep);
     // Two columns: the star solve of an angle estimator linear in the heat.
-    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, pruning, keep);
-    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, keep, width);
-    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, keep, width);
+    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, drop_below, keep);
+    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, drop_below, keep, width);
+    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, drop_below, keep, width);
     if (width <= 12)
-      return solve_block<12>(entries, rows, row_count, out, ws, pruning, keep, width);
-    return solve_block<16>(entries, rows, row_count, out, ws, pruning, keep, width);
+      return solve_block<12>(entries, rows, row_count, out, ws, drop_below, keep, width);
+    return solve_block<16>(entries, rows, row_count, out, ws, drop_below, keep, width);
   }
 
   // Builds a topological order (descendants before ancestors) of the
@@ -570,7 +555,7 @@ class Localized_cholesky_solver {
   // into the block already); finds them first, stamped `s`.
   template <int W>
   Solve_statistics forward_substitution(const std::vector<Rhs_entry>& entries, Workspace& ws,
-                                        std::uint32_t s, Pruning pruning) const {
+                                        std::uint32_t s, double drop_below) const {
     const auto& F = m_factor;
     Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
@@ -583,10 +568,10 @@ class Localized_cholesky_solver {
       const int first = ws.m_forward_entry[k];
       double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (pruning.enabled) {
+      if (drop_below > 0) {
         stats.factor_entries +=
             with_entries(sn, [&](const auto* entries) {
-              return kernels.forward_pruned<W>(entries, sn, first, ys, y, pruning.drop_below);
+              return kernels.forward_pruned<W>(entries, sn, first, ys, y, drop_below);
             });
         continue;
       }
@@ -686,7 +671,7 @@ class Localized_cholesky_solver {
   template <int W>
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
-                               Pruning pruning, bool keep, int width = W) const {
+                               double drop_below, bool keep, int width = W) const {
     const auto& F = m_factor;
     Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
@@ -695,7 +680,7 @@ class Localized_cholesky_solver {
     // Scatter b (permuted) into the block, then forward.
     const std::uint32_t s = ws.next_stamp();
     for (const Rhs_entry& e : entries) row_of(F.inverse_permutation[e.row])[e.column] += e.value;
-    Solve_statistics stats = forward_substitution<W>(entries, ws, s, pruning);
+    Solve_statistics stats = forward_substitution<W>(entries, ws, s, drop_below);
 
     // Backward: L^T x = y over the ancestors of the requested rows, in place.
     reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
@@ -704,10 +689,10 @@ class Localized_cholesky_solver {
       const auto& sn = F.supernode[*it];
       const int first = ws.m_backward_entry[*it];
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (pruning.enabled) {
+      if (drop_below > 0) {
         stats.factor_entries += with_entries(sn, [&](const auto* entries) {
           return kernels.backward_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
-                                            pruning.drop_below);
+                                            drop_below);
         });
         continue;
       }
