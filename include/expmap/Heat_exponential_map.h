@@ -251,7 +251,10 @@ class Heat_exponential_map
       auto ws = std::make_unique<Workspace>(*this);
       if (m_options.query_threads > 1)
         ws->region_star_solve = internal::Localized_cholesky_solver::Workspace(
-            m_heat_local.size(), m_heat_local.number_of_supernodes());
+            m_heat_local.size(), m_heat_local.number_of_supernodes(),
+            is_linear_in_heat(m_angle_estimator)
+                ? (m_separate_distance_heat ? 3 : 2)
+                : internal::Localized_cholesky_solver::max_block_width);
       return ws;
     });
   }
@@ -354,15 +357,23 @@ class Heat_exponential_map
 
   struct Workspace {
     explicit Workspace(const Heat_exponential_map& owner)
-        : heat_solve(owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes()),
-          poisson_solve(owner.m_poisson_local.size(), owner.m_poisson_local.number_of_supernodes()),
+        : heat_solve(owner.m_heat_local.size(), owner.m_heat_local.number_of_supernodes(),
+                     is_linear_in_heat(owner.m_angle_estimator)
+                         ? (owner.m_separate_distance_heat ? 3 : 2)
+                         : internal::Localized_cholesky_solver::max_block_width),
+          poisson_solve(owner.m_poisson_local.size(), owner.m_poisson_local.number_of_supernodes(),
+                        1),
           tentative(owner.number_of_vertices()) {
       if (owner.m_separate_distance_heat)
         distance_heat_solve = internal::Localized_cholesky_solver::Workspace(
-            owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes());
+            owner.m_distance_heat_local.size(), owner.m_distance_heat_local.number_of_supernodes(),
+            1);
       if (owner.has_boundary())
         boundary_heat_solve = internal::Localized_cholesky_solver::Workspace(
-            owner.m_boundary_heat_local.size(), owner.m_boundary_heat_local.number_of_supernodes());
+            owner.m_boundary_heat_local.size(), owner.m_boundary_heat_local.number_of_supernodes(),
+            is_linear_in_heat(owner.m_angle_estimator)
+                ? 3
+                : internal::Localized_cholesky_solver::max_block_width);
       in_region.resize(owner.number_of_vertices());
       seen.resize(owner.number_of_vertices());
       wanted.resize(owner.number_of_vertices());

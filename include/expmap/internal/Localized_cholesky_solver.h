@@ -58,17 +58,50 @@ class Localized_cholesky_solver {
   /// Widest block solved in one traversal; wider blocks are split.
   static constexpr int max_block_width = 16;
 
-  /// Per-thread scratch memory: a dense block of size n x width that is
-  /// kept zero between solves (only touched rows are cleared), node lists and
-  /// visit stamps (so no O(n) clearing is ever needed per query).
+  /// Per-thread scratch memory: a dense block of n rows by the widest block
+  /// it serves, kept zero between solves (only touched rows are cleared),
+  /// node lists and visit stamps (so no O(n) clearing is ever needed per
+  /// query). The block is most of it, so a workspace that only serves
+  /// one-column solves is made for that width.
   class Workspace {
    public:
+    /// A workspace for blocks of up to `max_block_width` columns, sized by
+    /// the first solve that uses it.
     Workspace() = default;
-    /// Scratch for a factor of order `n` with `supernodes` supernodes.
-    Workspace(int n, std::size_t supernodes) { resize(n, supernodes); }
+    /// Scratch for a factor of order `n` with `supernodes` supernodes, for
+    /// blocks of up to `max_width` columns (see `max_width()`).
+    /// \pre max_width >= 1 (else std::invalid_argument).
+    Workspace(int n, std::size_t supernodes, int max_width = max_block_width)
+        : m_width(block_width_for(max_width)) {
+      resize(n, supernodes);
+    }
+
+    /// The widest block solved in one traversal with this workspace: the
+    /// `max_width` it was made for, rounded up to the width of a kernel (1,
+    /// 2, 4, 8, 12 or 16). `solve()` splits wider blocks into blocks of
+    /// this width; `solve_extendable()` refuses them.
+    int max_width() const { return m_width; }
+
+    /// Bytes of memory the workspace holds.
+    std::size_t bytes() const {
+      return bytes_of(m_storage, m_forward_stamp, m_backward_stamp, m_forward_entry,
+                      m_backward_entry, m_forward_nodes, m_backward_nodes, m_path,
+                      m_kernel_scratch.kept, m_kernel_scratch.low_rank, m_previous_entry,
+                      m_extension_nodes, m_frontier, m_bucket_count);
+    }
 
    private:
     friend class Localized_cholesky_solver;
+    static int block_width_for(int max_width) {
+      if (max_width < 1)
+        throw std::invalid_argument(
+            "Localized_cholesky_solver: a workspace's max_width must be >= 1");
+      return kernel_width(std::min(max_width, max_block_width));
+    }
+    template <class... Vector>
+    static std::size_t bytes_of(const Vector&... v) {
+      return (... + (v.capacity() * sizeof(typename Vector::value_type)));
+    }
     bool fits(int n, std::size_t supernodes) const {
       return m_size == n && m_forward_stamp.size() == supernodes;
     }
@@ -76,7 +109,7 @@ class Localized_cholesky_solver {
       m_size = n;
       // Rows of the block start on cache lines (a row of 8 doubles is one line).
       constexpr std::size_t line = 64 / sizeof(double);
-      m_storage.assign(static_cast<std::size_t>(n) * max_block_width + line, 0.0);
+      m_storage.assign(static_cast<std::size_t>(n) * m_width + line, 0.0);
       const auto address = reinterpret_cast<std::uintptr_t>(m_storage.data());
       m_block = m_storage.data() + (line - (address / sizeof(double)) % line) % line;
       m_forward_stamp.assign(supernodes, 0);
@@ -118,6 +151,7 @@ class Localized_cholesky_solver {
     double m_largest_drop_below = 0;  // its pruning (0: none)
     std::uint32_t m_stamp = 0;
     int m_size = -1;
+    int m_width = max_block_width;  // of the block: a kernel width
   };
 
   Localized_cholesky_solver() = default;
@@ -181,11 +215,11 @@ class Localized_cholesky_solver {
   /// Number of supernodes whose rows below are kept in low-rank form.
   std::size_t number_of_compressed_supernodes() const { return m_compressed_supernodes; }
 
-  /// A workspace sized for this factor.
-  std::unique_ptr<Workspace> make_workspace() const {
-    auto ws = std::make_unique<Workspace>();
-    ws->resize(m_factor.size, number_of_supernodes());
-    return ws;
+  /// A workspace sized for this factor, for blocks of up to `max_width`
+  /// columns (see `Workspace::max_width()`).
+  /// \pre max_width >= 1 (else std::invalid_argument).
+  std::unique_ptr<Workspace> make_workspace(int max_width = max_block_width) const {
+    return std::make_unique<Workspace>(m_factor.size, number_of_supernodes(), max_width);
   }
 
   /// Solves A X = B where B has `width` columns given by its nonzero
@@ -227,7 +261,8 @@ class Localized_cholesky_solver {
     return solve_in_blocks(entries, width, rows, row_count, out, ws, drop_below);
   }
 
-  /// As `solve()` (at most `max_block_width` columns), but keeps the
+  /// As `solve()` (at most `ws.max_width()` columns, else
+  /// std::invalid_argument), but keeps the
   /// solution in the workspace so that `extend()` can return it on more
   /// rows, redoing neither the forward substitution nor the back substitution
   /// of the nodes already solved. The workspace stays busy until the next
@@ -256,7 +291,7 @@ class Localized_cholesky_solver {
     if (ws.m_open_width == 0)
       throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = with_open_width(ws, [&](auto width) {
+    Solve_statistics stats = with_kernel_width(ws.m_open_width, [&](auto width) {
       return extend_block<decltype(width)::value>(rows, row_count, out, ws);
     });
     stats.solve_seconds =
@@ -268,7 +303,8 @@ class Localized_cholesky_solver {
   /// would release it too).
   void release(Workspace& ws) const {
     if (ws.m_open_width == 0) return;
-    with_open_width(ws, [&](auto width) { clear_block<decltype(width)::value>(ws); });
+    with_kernel_width(ws.m_open_width,
+                      [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
     ws.m_largest_open = false;
   }
@@ -433,11 +469,14 @@ class Localized_cholesky_solver {
   Solve_statistics solve_and_keep(const std::vector<Rhs_entry>& entries, int width,
                                   const int* rows, std::size_t row_count, double* out,
                                   Workspace& ws, double drop_below) const {
-    if (width < 1 || width > max_block_width)
-      throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
+    if (width < 1 || width > ws.max_width())
+      throw std::invalid_argument(
+          "Localized_cholesky_solver: an extendable solve's width must be from 1 to its "
+          "workspace's max_width()");
     const auto start = std::chrono::steady_clock::now();
     prepare(ws);
-    Solve_statistics stats = dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
+    Solve_statistics stats =
+        dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -450,12 +489,13 @@ class Localized_cholesky_solver {
     const auto start = std::chrono::steady_clock::now();
     prepare(ws);
     Solve_statistics total;
+    const int block = ws.max_width();
     std::vector<Rhs_entry> chunk;
     std::vector<double> chunk_out;
-    for (int first = 0; first < width; first += max_block_width) {
-      const int w = std::min(max_block_width, width - first);
+    for (int first = 0; first < width; first += block) {
+      const int w = std::min(block, width - first);
       const std::vector<Rhs_entry>* part = &entries;
-      if (width > max_block_width) {
+      if (width > block) {
         chunk.clear();
         for (const Rhs_entry& e : entries)
           if (e.column >= first && e.column < first + w)
@@ -463,13 +503,13 @@ class Localized_cholesky_solver {
         part = &chunk;
       }
       double* target = out;
-      if (width > max_block_width) {
+      if (width > block) {
         chunk_out.assign(row_count * static_cast<std::size_t>(w), 0.0);
         target = chunk_out.data();
       }
       const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, drop_below);
       total += s;
-      if (width > max_block_width)
+      if (width > block)
         for (std::size_t i = 0; i < row_count; ++i)
           for (int c = 0; c < w; ++c)
             out[i * width + first + c] = chunk_out[i * w + c];
@@ -479,12 +519,20 @@ class Localized_cholesky_solver {
     return total;
   }
 
-  // Calls f(std::integral_constant<int, W>) with the kernel width W of the
-  // extendable solve left in `ws` (one of those `dispatch` chooses).
+  // The width of the kernel that solves a block of `width` columns: the
+  // widths 1 and 2 (the source heat and the Poisson solve; the star solve of
+  // an angle estimator linear in the heat) have kernels of their own, wider
+  // blocks are padded to a multiple of 4 up to 12, then 16.
+  static constexpr int kernel_width(int width) {
+    return width <= 2 ? width : width <= 4 ? 4 : width <= 8 ? 8 : width <= 12 ? 12 : 16;
+  }
+
+  // Calls f(std::integral_constant<int, W>) with W = `kernel`, one of the
+  // widths kernel_width() returns.
   template <class F>
-  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_open_width(
-      const Workspace& ws, F f) {
-    switch (ws.m_open_width) {
+  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_kernel_width(int kernel,
+                                                                                   F f) {
+    switch (kernel) {
       case 1: return f(std::integral_constant<int, 1>{});
       case 2: return f(std::integral_constant<int, 2>{});
       case 4: return f(std::integral_constant<int, 4>{});
@@ -506,14 +554,10 @@ class Localized_cholesky_solver {
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
                             std::size_t row_count, double* out, Workspace& ws,
                             double drop_below, bool keep = false) const {
-    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, drop_below, keep);
-    // Two columns: the star solve of an angle estimator linear in the heat.
-    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, drop_below, keep);
-    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, drop_below, keep, width);
-    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, drop_below, keep, width);
-    if (width <= 12)
-      return solve_block<12>(entries, rows, row_count, out, ws, drop_below, keep, width);
-    return solve_block<16>(entries, rows, row_count, out, ws, drop_below, keep, width);
+    return with_kernel_width(kernel_width(width), [&](auto kernel) {
+      return solve_block<decltype(kernel)::value>(entries, rows, row_count, out, ws, drop_below,
+                                                  keep, width);
+    });
   }
 
   // Builds a topological order (descendants before ancestors) of the
