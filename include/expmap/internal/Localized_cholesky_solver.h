@@ -10,6 +10,7 @@
 #include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
 #include <expmap/internal/Supernode_kernels.h>
+#include <expmap/internal/Supernode_tree.h>
 
 #include <algorithm>
 #include <array>
@@ -47,16 +48,17 @@ struct Rhs_entry {
 /// start nodes, marking as we go, which also yields a topological order
 /// without sorting: paths found later are placed before paths found earlier.
 ///
-/// All columns of the block share one traversal of L. The block is stored
-/// row-major with a compile-time width so that the update of one row is a
-/// short fixed-length loop the compiler vectorizes.
+/// All columns of the block share one traversal of L, supernode by
+/// supernode (`Supernode_kernels`). The block is stored row-major with a
+/// compile-time width so that the update of one row is a short
+/// fixed-length loop the compiler vectorizes.
 ///
 /// The object is immutable after construction; per-query scratch lives in a
 /// `Workspace`, so many threads can solve at once with one workspace each.
 class Localized_cholesky_solver {
  public:
   /// Widest block solved in one traversal; wider blocks are split.
-  static constexpr int max_block_width = 16;
+  static constexpr int max_block_width = Supernode_kernels::max_width;
 
   /// Per-thread scratch memory: a dense block of n rows by the widest block
   /// it serves, kept zero between solves (only touched rows are cleared),
@@ -77,9 +79,9 @@ class Localized_cholesky_solver {
     }
 
     /// The widest block solved in one traversal with this workspace: the
-    /// `max_width` it was made for, rounded up to the width of a kernel (1,
-    /// 2, 4, 8, 12 or 16). `solve()` splits wider blocks into blocks of
-    /// this width; `solve_extendable()` refuses them.
+    /// `max_width` it was made for, rounded up to the width of a kernel
+    /// (`Supernode_kernels::width_for()`). `solve()` splits wider blocks
+    /// into blocks of this width; `solve_extendable()` refuses them.
     int max_width() const { return m_width; }
 
     /// Bytes of memory the workspace holds.
@@ -96,7 +98,7 @@ class Localized_cholesky_solver {
       if (max_width < 1)
         throw std::invalid_argument(
             "Localized_cholesky_solver: a workspace's max_width must be >= 1");
-      return kernel_width(std::min(max_width, max_block_width));
+      return Supernode_kernels::width_for(std::min(max_width, max_block_width));
     }
     template <class... Vector>
     static std::size_t bytes_of(const Vector&... v) {
@@ -163,23 +165,21 @@ class Localized_cholesky_solver {
   explicit Localized_cholesky_solver(
       const Cholesky_factor_view& factor,
       Factor_precision precision = Factor_precision::double_precision)
-      : m_factor(make_supernodal_factor(factor, precision)) {
+      : m_factor(make_supernodal_factor(factor, precision)), m_tree(m_factor) {
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
     for (const auto& sn : m_factor.supernode)
-      with_entries(sn, [this, &sn](const auto* entries) {
+      m_factor.with_entries(sn, [this, &sn](const auto* entries) {
         for (int c = 0; c < sn.ncol; ++c)
-          m_inverse_diagonal[sn.first_column + c] =
-              1.0 / static_cast<double>(entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
+          m_inverse_diagonal[sn.first_column + c] = 1.0 / static_cast<double>(
+              entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
       });
-    compute_tree_height();
-    compute_children();
   }
 
   int size() const { return m_factor.size; }
 
   /// Height of the elimination tree (number of nodes on its longest
   /// leaf-to-root path).
-  int tree_height() const { return m_tree_height; }
+  int tree_height() const { return m_tree.height(); }
 
   /// Stored entries of the supernodal factor (dense blocks included).
   std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
@@ -291,7 +291,7 @@ class Localized_cholesky_solver {
     if (ws.m_open_width == 0)
       throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = with_kernel_width(ws.m_open_width, [&](auto width) {
+    Solve_statistics stats = Supernode_kernels::with_width(ws.m_open_width, [&](auto width) {
       return extend_block<decltype(width)::value>(rows, row_count, out, ws);
     });
     stats.solve_seconds =
@@ -303,7 +303,7 @@ class Localized_cholesky_solver {
   /// would release it too).
   void release(Workspace& ws) const {
     if (ws.m_open_width == 0) return;
-    with_kernel_width(ws.m_open_width,
+    Supernode_kernels::with_width(ws.m_open_width,
                       [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
     ws.m_largest_open = false;
@@ -519,29 +519,6 @@ class Localized_cholesky_solver {
     return total;
   }
 
-  // The width of the kernel that solves a block of `width` columns: the
-  // widths 1 and 2 (the source heat and the Poisson solve; the star solve of
-  // an angle estimator linear in the heat) have kernels of their own, wider
-  // blocks are padded to a multiple of 4 up to 12, then 16.
-  static constexpr int kernel_width(int width) {
-    return width <= 2 ? width : width <= 4 ? 4 : width <= 8 ? 8 : width <= 12 ? 12 : 16;
-  }
-
-  // Calls f(std::integral_constant<int, W>) with W = `kernel`, one of the
-  // widths kernel_width() returns.
-  template <class F>
-  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_kernel_width(int kernel,
-                                                                                   F f) {
-    switch (kernel) {
-      case 1: return f(std::integral_constant<int, 1>{});
-      case 2: return f(std::integral_constant<int, 2>{});
-      case 4: return f(std::integral_constant<int, 4>{});
-      case 8: return f(std::integral_constant<int, 8>{});
-      case 12: return f(std::integral_constant<int, 12>{});
-      default: return f(std::integral_constant<int, 16>{});
-    }
-  }
-
   // A workspace of the right size with a zero block (an extendable solve
   // left in it is released).
   void prepare(Workspace& ws) const {
@@ -554,45 +531,10 @@ class Localized_cholesky_solver {
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
                             std::size_t row_count, double* out, Workspace& ws,
                             double drop_below, bool keep = false) const {
-    return with_kernel_width(kernel_width(width), [&](auto kernel) {
+    return Supernode_kernels::with_width(Supernode_kernels::width_for(width), [&](auto kernel) {
       return solve_block<decltype(kernel)::value>(entries, rows, row_count, out, ws, drop_below,
                                                   keep, width);
     });
-  }
-
-  // Builds a topological order (descendants before ancestors) of the
-  // supernodes on the tree paths from the pivots of `begin..end` to the
-  // root: each new path goes in front of the paths found before it, whose
-  // nodes it can only precede. Also records, per supernode, the first of its
-  // columns a path enters at: the columns before it are not needed (zero in
-  // forward substitution, unused in back substitution).
-  template <class Start, class StartToPivot>
-  void reach(const Start* begin, const Start* end, StartToPivot to_pivot,
-             std::vector<std::uint32_t>& stamp, std::vector<int>& entry, std::uint32_t s,
-             std::vector<int>& order, std::vector<int>& path) const {
-    const auto& F = m_factor;
-    order.clear();
-    for (const Start* start = begin; start != end; ++start) {
-      path.clear();
-      int column = to_pivot(*start);
-      int k = F.supernode_of_column[column];
-      while (true) {
-        const int offset = column - F.supernode[k].first_column;
-        if (stamp[k] == s) {  // known: only its entry may move down
-          entry[k] = std::min(entry[k], offset);
-          break;
-        }
-        stamp[k] = s;
-        entry[k] = offset;
-        path.push_back(k);
-        const auto& sn = F.supernode[k];
-        if (sn.parent == -1) break;
-        column = F.row_index[sn.below_rows];  // the parent of the last column
-        k = sn.parent;
-      }
-      order.insert(order.end(), path.rbegin(), path.rend());
-    }
-    std::reverse(order.begin(), order.end());
   }
 
   // Forward: L y = b over the ancestors of the nonzeros of b (scattered
@@ -602,25 +544,15 @@ class Localized_cholesky_solver {
                                         std::uint32_t s, double drop_below) const {
     const auto& F = m_factor;
     Supernode_kernels kernels = kernels_in(ws);
-    double* y = ws.m_block;
     Solve_statistics stats;
-    reach(entries.data(), entries.data() + entries.size(),
-          [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; }, ws.m_forward_stamp,
-          ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
+    supernode_reach(F, entries.data(), entries.data() + entries.size(),
+                    [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; },
+                    ws.m_forward_stamp, ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
     for (const int k : ws.m_forward_nodes) {
       const auto& sn = F.supernode[k];
       const int first = ws.m_forward_entry[k];
-      double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (drop_below > 0) {
-        stats.factor_entries +=
-            with_entries(sn, [&](const auto* entries) {
-              return kernels.forward_pruned<W>(entries, sn, first, ys, y, drop_below);
-            });
-        continue;
-      }
-      with_entries(sn, [&](const auto* entries) { kernels.forward<W>(entries, sn, first, ys, y); });
-      stats.factor_entries += Supernode_kernels::entries_read(sn, first);
+      stats.factor_entries += kernels.forward<W>(sn, first, ws.m_block, drop_below);
     }
     return stats;
   }
@@ -674,15 +606,7 @@ class Localized_cholesky_solver {
       const auto& sn = F.supernode[k];
       double* ys = y + static_cast<std::size_t>(sn.first_column);
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
-      if (ws.m_largest_drop_below > 0) {
-        stats.factor_entries +=
-            with_entries(sn, [&](const auto* entries) {
-              return kernels.backward_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below);
-            });
-      } else {
-        with_entries(sn, [&](const auto* entries) { kernels.backward<1>(entries, sn, 0, ys, y); });
-        stats.factor_entries += Supernode_kernels::entries_read(sn, 0);
-      }
+      stats.factor_entries += kernels.backward<1>(sn, 0, y, ws.m_largest_drop_below);
       ws.m_backward_stamp[k] = s;
       ws.m_backward_entry[k] = 0;
       ws.m_backward_nodes.push_back(k);
@@ -695,8 +619,8 @@ class Localized_cholesky_solver {
         ws.m_buckets_touched_to = std::max(ws.m_buckets_touched_to, b + 1);
         if (b >= ws.m_bucket_floor) ++ws.m_values_above;
       }
-      for (int q = m_child_start[k]; q < m_child_start[k + 1]; ++q) {
-        const int child = m_child[q];
+      for (const int* c = m_tree.children_begin(k); c != m_tree.children_end(k); ++c) {
+        const int child = *c;
         double bound = std::numeric_limits<double>::infinity();
         if (ws.m_forward_stamp[child] != s) {
           const auto& cn = F.supernode[child];
@@ -727,23 +651,14 @@ class Localized_cholesky_solver {
     Solve_statistics stats = forward_substitution<W>(entries, ws, s, drop_below);
 
     // Backward: L^T x = y over the ancestors of the requested rows, in place.
-    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
-          ws.m_backward_stamp, ws.m_backward_entry, s, ws.m_backward_nodes, ws.m_path);
+    supernode_reach(F, rows, rows + row_count,
+                    [&F](int row) { return F.inverse_permutation[row]; }, ws.m_backward_stamp,
+                    ws.m_backward_entry, s, ws.m_backward_nodes, ws.m_path);
     for (auto it = ws.m_backward_nodes.rbegin(); it != ws.m_backward_nodes.rend(); ++it) {
       const auto& sn = F.supernode[*it];
       const int first = ws.m_backward_entry[*it];
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (drop_below > 0) {
-        stats.factor_entries += with_entries(sn, [&](const auto* entries) {
-          return kernels.backward_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
-                                            drop_below);
-        });
-        continue;
-      }
-      with_entries(sn, [&](const auto* entries) {
-        kernels.backward<W>(entries, sn, first, row_of(sn.first_column), y);
-      });
-      stats.factor_entries += Supernode_kernels::entries_read(sn, first);
+      stats.factor_entries += kernels.backward<W>(sn, first, y, drop_below);
     }
 
     read_rows<W>(rows, row_count, out, ws, width);
@@ -793,16 +708,12 @@ class Localized_cholesky_solver {
     ws.m_previous_entry.resize(ws.m_backward_nodes.size());
     for (std::size_t i = 0; i < ws.m_backward_nodes.size(); ++i)
       ws.m_previous_entry[i] = ws.m_backward_entry[ws.m_backward_nodes[i]];
-    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
-          ws.m_backward_stamp, ws.m_backward_entry, ws.m_stamp, ws.m_extension_nodes, ws.m_path);
+    supernode_reach(F, rows, rows + row_count,
+                    [&F](int row) { return F.inverse_permutation[row]; }, ws.m_backward_stamp,
+                    ws.m_backward_entry, ws.m_stamp, ws.m_extension_nodes, ws.m_path);
     auto solve_columns = [&](int k, int first, int end) {
-      const auto& sn = F.supernode[k];
       stats.backward_nodes += static_cast<std::size_t>(end - first);
-      with_entries(sn, [&](const auto* entries) {
-        kernels.backward<W>(entries, sn, first, y + static_cast<std::size_t>(sn.first_column) * W,
-                            y, end);
-      });
-      stats.factor_entries += Supernode_kernels::entries_read(sn, first, end);
+      stats.factor_entries += kernels.backward<W>(F.supernode[k], first, y, 0, end);
     };
     for (std::size_t i = ws.m_backward_nodes.size(); i-- > 0;) {
       const int k = ws.m_backward_nodes[i];
@@ -824,43 +735,9 @@ class Localized_cholesky_solver {
     return Supernode_kernels(m_factor, m_inverse_diagonal.data(), ws.m_kernel_scratch);
   }
 
-  // Calls f with the entries array of supernode `sn` in its precision.
-  template <class F>
-  auto with_entries(const Supernodal_factor::Supernode& sn, F&& f) const
-      -> decltype(f(std::declval<const double*>())) {
-    return m_factor.with_entries(sn, std::forward<F>(f));
-  }
-
-  void compute_tree_height() {
-    // Parents come after their children, so one descending sweep gives every
-    // supernode the number of columns on its path to the root.
-    const auto& sns = m_factor.supernode;
-    std::vector<int> depth(sns.size(), 0);
-    m_tree_height = 0;
-    for (std::size_t k = sns.size(); k-- > 0;) {
-      depth[k] = sns[k].ncol + (sns[k].parent == -1 ? 0 : depth[sns[k].parent]);
-      m_tree_height = std::max(m_tree_height, depth[k]);
-    }
-  }
-
-  // The children of every supernode, compressed: those of k are
-  // m_child[m_child_start[k] .. m_child_start[k + 1]).
-  void compute_children() {
-    const auto& sns = m_factor.supernode;
-    m_child_start.assign(sns.size() + 1, 0);
-    for (const auto& sn : sns)
-      if (sn.parent != -1) ++m_child_start[static_cast<std::size_t>(sn.parent) + 1];
-    for (std::size_t k = 0; k < sns.size(); ++k) m_child_start[k + 1] += m_child_start[k];
-    m_child.resize(static_cast<std::size_t>(m_child_start.back()));
-    std::vector<int> next(m_child_start.begin(), m_child_start.end() - 1);
-    for (std::size_t k = 0; k < sns.size(); ++k)
-      if (sns[k].parent != -1) m_child[static_cast<std::size_t>(next[sns[k].parent]++)] = static_cast<int>(k);
-  }
-
   Supernodal_factor m_factor;
+  Supernode_tree m_tree;
   std::vector<double> m_inverse_diagonal;  // 1 / L(j, j)
-  std::vector<int> m_child_start, m_child;
-  int m_tree_height = 0;
   std::size_t m_compressed_supernodes = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace expmap {
@@ -30,6 +31,31 @@ class Supernode_kernels {
  public:
   using Supernode = Supernodal_factor::Supernode;
 
+  /// Widest block of right-hand sides a kernel is compiled for.
+  static constexpr int max_width = 16;
+
+  /// The width W of the kernel that solves a block of `columns` columns
+  /// (1 to `max_width`): 1 and 2 have kernels of their own (the source heat
+  /// and the Poisson solve; the star solve of an angle estimator linear in
+  /// the heat), wider blocks are padded to 4, 8, 12 or 16.
+  static constexpr int width_for(int columns) {
+    return columns <= 2 ? columns : columns <= 4 ? 4 : columns <= 8 ? 8 : columns <= 12 ? 12 : 16;
+  }
+
+  /// Calls f(std::integral_constant<int, W>) with W = `width`, one of the
+  /// widths `width_for()` returns.
+  template <class F>
+  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_width(int width, F f) {
+    switch (width) {
+      case 1: return f(std::integral_constant<int, 1>{});
+      case 2: return f(std::integral_constant<int, 2>{});
+      case 4: return f(std::integral_constant<int, 4>{});
+      case 8: return f(std::integral_constant<int, 8>{});
+      case 12: return f(std::integral_constant<int, 12>{});
+      default: return f(std::integral_constant<int, 16>{});
+    }
+  }
+
   /// Scratch memory of the kernels, kept by the caller per query (a
   /// solver's workspace) so that no solve allocates once warm.
   struct Scratch {
@@ -44,12 +70,48 @@ class Supernode_kernels {
                     Scratch& scratch)
       : m_factor(factor), m_inverse_diagonal(inverse_diagonal), m_scratch(scratch) {}
 
-  /// Forward substitution through `sn` from its column `first` on (the
-  /// earlier ones are zero): the diagonal block row by row (a row of the
-  /// row-major block is contiguous), then the rows below it, each one dot
-  /// product. `ys` are the supernode's own rows of the block `y`.
+  /// Forward substitution L y = b through `sn`, from its column `first` on
+  /// (the earlier ones are zero), on the block `y` (row-major, W columns,
+  /// by pivot). With `drop_below` > 0 it is pruned: the columns whose solved
+  /// rows are at most `drop_below` in every column of the block are not
+  /// propagated.
+  /// \returns the factor entries read.
+  template <int W>
+  std::size_t forward(const Supernode& sn, int first, double* y, double drop_below) {
+    double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
+    return m_factor.with_entries(sn, [&](const auto* entries) {
+      if (drop_below > 0) return forward_pruned<W>(entries, sn, first, ys, y, drop_below);
+      forward_full<W>(entries, sn, first, ys, y);
+      return entries_read(sn, first, sn.ncol);
+    });
+  }
+
+  /// Back substitution L^T x = y through `sn`, for its columns from `first`
+  /// to `end` (-1: all the rest; the columns from `end` on are solved
+  /// already), on the block `y`, whose rows of the supernode's ancestors are
+  /// solved. With `drop_below` > 0 (and `end` = -1) it is pruned: the rows
+  /// whose solutions are at most `drop_below` in every column of the block
+  /// are not propagated.
+  /// \returns the factor entries read.
+  template <int W>
+  std::size_t backward(const Supernode& sn, int first, double* y, double drop_below,
+                       int end = -1) {
+    double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
+    if (end < 0) end = sn.ncol;
+    return m_factor.with_entries(sn, [&](const auto* entries) {
+      if (drop_below > 0) return backward_pruned<W>(entries, sn, first, ys, y, drop_below);
+      backward_full<W>(entries, sn, first, ys, y, end);
+      return entries_read(sn, first, end);
+    });
+  }
+
+ private:
+  // Forward substitution through one supernode from its column `first` on:
+  // the diagonal block row by row (a row of the row-major block is
+  // contiguous), then the rows below it, each one dot product. `ys` are the
+  // supernode's own rows of the block `y`; `entries` its entries.
   template <int W, class T>
-  void forward(const T* entries, const Supernode& sn, int first, double* ys, double* y) {
+  void forward_full(const T* entries, const Supernode& sn, int first, double* ys, double* y) {
     const T* diagonal = entries + sn.diagonal;
     for (int r = first; r < sn.ncol; ++r) {
       double* yr = ys + r * W;
@@ -68,12 +130,12 @@ class Supernode_kernels {
                       y + static_cast<std::size_t>(below_rows[t]) * W);
   }
 
-  /// `forward()` pruned: only the columns whose solved rows are above
-  /// `drop_below` are propagated, to the later rows of the diagonal block
-  /// and to the rows below. They are kept as [begin, end) runs: in a
-  /// separator the columns near the right-hand side tend to be consecutive,
-  /// so a dot product over a run is as contiguous as the unpruned one.
-  /// \returns the factor entries read.
+  // forward_full() pruned: only the columns whose solved rows are above
+  // `drop_below` are propagated, to the later rows of the diagonal block and
+  // to the rows below. They are kept as [begin, end) runs: in a separator
+  // the columns near the right-hand side tend to be consecutive, so a dot
+  // product over a run is as contiguous as the unpruned one. Returns the
+  // factor entries read.
   template <int W, class T>
   std::size_t forward_pruned(const T* entries, const Supernode& sn, int first, double* ys,
                              double* y, double drop_below) {
@@ -112,16 +174,14 @@ class Supernode_kernels {
     return read + kept * static_cast<std::size_t>(sn.nbelow);
   }
 
-  /// Back substitution through `sn`, for its columns from `first` to `end`
-  /// (all the rest by default; the columns from `end` on are solved
-  /// already): the rows below it (already solved: they belong to
-  /// ancestors) are subtracted, then the diagonal block is solved bottom-up,
-  /// each solved row subtracted from the rows above it (row-contiguous in
-  /// the row-major block).
+  // Back substitution through one supernode, for its columns from `first`
+  // to `end` (the columns from `end` on are solved already): the rows below
+  // it (already solved: they belong to ancestors) are subtracted, then the
+  // diagonal block is solved bottom-up, each solved row subtracted from the
+  // rows above it (row-contiguous in the row-major block).
   template <int W, class T>
-  void backward(const T* entries, const Supernode& sn, int first, double* ys, const double* y,
-                int end = -1) {
-    if (end < 0) end = sn.ncol;
+  void backward_full(const T* entries, const Supernode& sn, int first, double* ys,
+                     const double* y, int end) {
     backward_below<W>(entries, sn, first, ys, y, end);
     const T* diagonal = entries + sn.diagonal;
     for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
@@ -158,14 +218,13 @@ class Supernode_kernels {
     }
   }
 
-  /// `backward()` pruned, for all the columns from `first` on: only the
-  /// rows below (solved ancestors) and the rows of the diagonal block whose
-  /// solutions are above `drop_below` are subtracted. Both go four rows of L
-  /// at a time, as in the full kernel: the kept rows below in groups of
-  /// four, the diagonal block in its groups of four rows with the solutions
-  /// at or below the threshold propagated as zeros, and a group skipped when
-  /// all four are.
-  /// \returns the factor entries read.
+  // backward_full() pruned, for all the columns from `first` on: only the
+  // rows below (solved ancestors) and the rows of the diagonal block whose
+  // solutions are above `drop_below` are subtracted. Both go four rows of L
+  // at a time, as in the full kernel: the kept rows below in groups of four,
+  // the diagonal block in its groups of four rows with the solutions at or
+  // below the threshold propagated as zeros, and a group skipped when all
+  // four are. Returns the factor entries read.
   template <int W, class T>
   std::size_t backward_pruned(const T* entries, const Supernode& sn, int first, double* ys,
                               const double* y, double drop_below) {
@@ -227,11 +286,10 @@ class Supernode_kernels {
     return read;
   }
 
-  /// Entries of the supernode's columns from `first` on (to `end`) that
-  /// `forward()` or `backward()` reads: rows below in low-rank form are r
-  /// per row and column.
-  static std::size_t entries_read(const Supernode& sn, int first, int end = -1) {
-    if (end < 0) end = sn.ncol;
+  // Entries of the supernode's columns [first, end) that forward_full() or
+  // backward_full() reads: rows below in low-rank form are r per row and
+  // column.
+  static std::size_t entries_read(const Supernode& sn, int first, int end) {
     const std::size_t c = static_cast<std::size_t>(end - first);
     const std::size_t diagonal = c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
     const std::size_t nbelow = static_cast<std::size_t>(sn.nbelow);
@@ -239,7 +297,6 @@ class Supernode_kernels {
     return diagonal + nbelow * c;
   }
 
- private:
   const int* rows_below(const Supernode& sn) const {
     return m_factor.row_index.data() + sn.below_rows;
   }
