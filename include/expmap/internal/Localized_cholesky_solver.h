@@ -6,24 +6,21 @@
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Huge_page_allocator.h>
+#include <expmap/internal/Largest_first_frontier.h>
+#include <expmap/internal/Localized_solve_workspace.h>
 #include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
 #include <expmap/internal/Supernode_kernels.h>
 #include <expmap/internal/Supernode_tree.h>
 
 #include <algorithm>
-#include <array>
-#include <cassert>
 #include <chrono>
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -60,101 +57,8 @@ class Localized_cholesky_solver {
   /// Widest block solved in one traversal; wider blocks are split.
   static constexpr int max_block_width = Supernode_kernels::max_width;
 
-  /// Per-thread scratch memory: a dense block of n rows by the widest block
-  /// it serves, kept zero between solves (only touched rows are cleared),
-  /// node lists and visit stamps (so no O(n) clearing is ever needed per
-  /// query). The block is most of it, so a workspace that only serves
-  /// one-column solves is made for that width.
-  class Workspace {
-   public:
-    /// A workspace for blocks of up to `max_block_width` columns, sized by
-    /// the first solve that uses it.
-    Workspace() = default;
-    /// Scratch for a factor of order `n` with `supernodes` supernodes, for
-    /// blocks of up to `max_width` columns (see `max_width()`).
-    /// \pre max_width >= 1 (else std::invalid_argument).
-    Workspace(int n, std::size_t supernodes, int max_width = max_block_width)
-        : m_width(block_width_for(max_width)) {
-      resize(n, supernodes);
-    }
-
-    /// The widest block solved in one traversal with this workspace: the
-    /// `max_width` it was made for, rounded up to the width of a kernel
-    /// (`Supernode_kernels::width_for()`). `solve()` splits wider blocks
-    /// into blocks of this width; `solve_extendable()` refuses them.
-    int max_width() const { return m_width; }
-
-    /// Bytes of memory the workspace holds.
-    std::size_t bytes() const {
-      return bytes_of(m_storage, m_forward_stamp, m_backward_stamp, m_forward_entry,
-                      m_backward_entry, m_forward_nodes, m_backward_nodes, m_path,
-                      m_kernel_scratch.kept, m_kernel_scratch.low_rank, m_previous_entry,
-                      m_extension_nodes, m_frontier, m_bucket_count);
-    }
-
-   private:
-    friend class Localized_cholesky_solver;
-    static int block_width_for(int max_width) {
-      if (max_width < 1)
-        throw std::invalid_argument(
-            "Localized_cholesky_solver: a workspace's max_width must be >= 1");
-      return Supernode_kernels::width_for(std::min(max_width, max_block_width));
-    }
-    template <class... Vector>
-    static std::size_t bytes_of(const Vector&... v) {
-      return (... + (v.capacity() * sizeof(typename Vector::value_type)));
-    }
-    bool fits(int n, std::size_t supernodes) const {
-      return m_size == n && m_forward_stamp.size() == supernodes;
-    }
-    void resize(int n, std::size_t supernodes) {
-      m_size = n;
-      // Rows of the block start on cache lines (a row of 8 doubles is one line).
-      constexpr std::size_t line = 64 / sizeof(double);
-      m_storage.assign(static_cast<std::size_t>(n) * m_width + line, 0.0);
-      const auto address = reinterpret_cast<std::uintptr_t>(m_storage.data());
-      m_block = m_storage.data() + (line - (address / sizeof(double)) % line) % line;
-      m_forward_stamp.assign(supernodes, 0);
-      m_backward_stamp.assign(supernodes, 0);
-      m_forward_entry.assign(supernodes, 0);
-      m_backward_entry.assign(supernodes, 0);
-      m_stamp = 0;
-      m_open_width = 0;
-    }
-    std::uint32_t next_stamp() {
-      if (++m_stamp == 0) {  // wrapped around: the stamps must start afresh
-        std::fill(m_forward_stamp.begin(), m_forward_stamp.end(), 0);
-        std::fill(m_backward_stamp.begin(), m_backward_stamp.end(), 0);
-        m_stamp = 1;
-      }
-      return m_stamp;
-    }
-    std::vector<double, Huge_page_allocator<double>> m_storage;
-    double* m_block = nullptr;  // m_storage, aligned
-    std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
-    std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
-    std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
-    Supernode_kernels::Scratch m_kernel_scratch;
-    // An extendable solve left in the block: its kernel width (0 if none)
-    // and its number of columns; the entries of its supernodes before an
-    // extension, and the supernodes the extension adds.
-    int m_open_width = 0, m_open_columns = 0;
-    std::vector<int> m_previous_entry, m_extension_nodes;
-    // An open solve_largest: the supernodes not visited yet whose parents
-    // were, as a heap of (bound, supernode); the values solved, counted by
-    // bucket (value_bucket), those in the buckets touched; the lowest bucket
-    // whose values are counted as above the bounds left, and how many
-    // values that is; how many values were written.
-    bool m_largest_open = false;
-    std::vector<std::pair<double, int>> m_frontier;
-    std::vector<std::uint32_t> m_bucket_count;
-    std::size_t m_buckets_touched_from = 0, m_buckets_touched_to = 0;
-    std::size_t m_bucket_floor = 0, m_values_above = 0, m_largest_values = 0;
-    double m_largest_drop_below = 0;  // its pruning (0: none)
-    std::uint32_t m_stamp = 0;
-    int m_size = -1;
-    int m_width = max_block_width;  // of the block: a kernel width
-  };
+  /// Per-thread scratch memory of the solves, and a solve left open.
+  using Workspace = Localized_solve_workspace;
 
   Localized_cholesky_solver() = default;
 
@@ -290,13 +194,11 @@ class Localized_cholesky_solver {
                           Workspace& ws) const {
     if (ws.m_open_width == 0)
       throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
-    const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = Supernode_kernels::with_width(ws.m_open_width, [&](auto width) {
-      return extend_block<decltype(width)::value>(rows, row_count, out, ws);
+    return timed([&] {
+      return Supernode_kernels::with_width(ws.m_open_width, [&](auto width) {
+        return extend_block<decltype(width)::value>(rows, row_count, out, ws);
+      });
     });
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
   }
 
   /// Ends an extendable solve: the workspace is ready for any solve (which
@@ -350,7 +252,7 @@ class Localized_cholesky_solver {
   Solve_statistics solve_largest(const std::vector<Rhs_entry>& entries, std::size_t count,
                                  std::vector<int>& rows, std::vector<double>& values,
                                  Workspace& ws, double drop_below = 0) const {
-    return solve_largest_until(entries, Largest_stop{count, 0.0}, rows, values, ws, drop_below);
+    return solve_largest_until(entries, Stop{count, 0.0}, rows, values, ws, drop_below);
   }
 
   /// As `solve_largest()`, but for every value at least `threshold` (> 0)
@@ -363,8 +265,8 @@ class Localized_cholesky_solver {
                                   std::vector<int>& rows, std::vector<double>& values,
                                   Workspace& ws, double drop_below = 0) const {
     check_threshold(threshold);
-    return solve_largest_until(entries, Largest_stop{no_count, threshold}, rows, values, ws,
-                               drop_below);
+    return solve_largest_until(entries, Stop{Largest_first_frontier::no_count, threshold}, rows,
+                               values, ws, drop_below);
   }
 
   /// Continues the last `solve_largest()` or `solve_at_least()` on `ws`
@@ -373,7 +275,7 @@ class Localized_cholesky_solver {
   Solve_statistics extend_at_least(double threshold, std::vector<int>& rows,
                                    std::vector<double>& values, Workspace& ws) const {
     check_threshold(threshold);
-    return extend_largest_until(Largest_stop{no_count, threshold}, rows, values, ws);
+    return extend_largest_until(Stop{Largest_first_frontier::no_count, threshold}, rows, values, ws);
   }
 
   /// Continues the last `solve_largest()` on `ws` until the `count` largest
@@ -382,17 +284,11 @@ class Localized_cholesky_solver {
   /// \pre `ws` holds an open `solve_largest()` (else std::logic_error).
   Solve_statistics extend_largest(std::size_t count, std::vector<int>& rows,
                                   std::vector<double>& values, Workspace& ws) const {
-    return extend_largest_until(Largest_stop{count, 0.0}, rows, values, ws);
+    return extend_largest_until(Stop{count, 0.0}, rows, values, ws);
   }
 
  private:
-  // Where a largest-first search may stop: once `count` values exceed every
-  // bound left, or once every bound left is below `threshold` (0: never).
-  struct Largest_stop {
-    std::size_t count;
-    double threshold;
-  };
-  static constexpr std::size_t no_count = std::numeric_limits<std::size_t>::max();
+  using Stop = Largest_first_frontier::Stop;
 
   static void check_threshold(double threshold) {
     if (!(threshold > 0) || !std::isfinite(threshold))
@@ -400,7 +296,7 @@ class Localized_cholesky_solver {
           "Localized_cholesky_solver: the threshold must be positive and finite");
   }
 
-  Solve_statistics solve_largest_until(const std::vector<Rhs_entry>& entries, Largest_stop stop,
+  Solve_statistics solve_largest_until(const std::vector<Rhs_entry>& entries, Stop stop,
                                        std::vector<int>& rows, std::vector<double>& values,
                                        Workspace& ws, double drop_below) const {
     check_drop_below(drop_below);
@@ -408,52 +304,43 @@ class Localized_cholesky_solver {
       if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
         throw std::invalid_argument(
             "Localized_cholesky_solver: solve_largest needs one nonnegative column");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    const std::uint32_t s = ws.next_stamp();
-    double* y = ws.m_block;
-    for (const Rhs_entry& e : entries)
-      y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
-    ws.m_largest_drop_below = drop_below;
-    Solve_statistics stats =
-        forward_substitution<1>(entries, ws, s, drop_below);
-    ws.m_backward_nodes.clear();
-    ws.m_frontier.clear();
-    for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
-      if (m_factor.supernode[k].parent == -1)
-        ws.m_frontier.push_back({std::numeric_limits<double>::infinity(), k});
-    ws.m_open_width = 1;
-    ws.m_open_columns = 1;
-    ws.m_largest_open = true;
-    if (ws.m_bucket_count.size() != value_buckets) {
-      ws.m_bucket_count.assign(value_buckets, 0);
-      ws.m_buckets_touched_to = 0;
-    }
-    std::fill(ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(ws.m_buckets_touched_from),
-              ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(
-                  std::max(ws.m_buckets_touched_from, ws.m_buckets_touched_to)),
-              0u);
-    ws.m_buckets_touched_from = value_buckets;
-    ws.m_buckets_touched_to = 0;
-    ws.m_bucket_floor = value_buckets;
-    ws.m_values_above = 0;
-    rows.clear();
-    values.clear();
-    stats += largest_first(stop, rows, values, ws);
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+    return timed([&] {
+      prepare(ws);
+      const std::uint32_t s = ws.next_stamp();
+      double* y = ws.m_block;
+      for (const Rhs_entry& e : entries)
+        y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
+      ws.m_largest_drop_below = drop_below;
+      Solve_statistics stats = forward_substitution<1>(entries, ws, s, drop_below);
+      ws.m_backward_nodes.clear();
+      ws.m_frontier.clear();
+      for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
+        if (m_factor.supernode[k].parent == -1)
+          ws.m_frontier.push(std::numeric_limits<double>::infinity(), k);
+      ws.m_open_width = 1;
+      ws.m_open_columns = 1;
+      ws.m_largest_open = true;
+      rows.clear();
+      values.clear();
+      return stats += largest_first(stop, rows, values, ws);
+    });
   }
 
-  Solve_statistics extend_largest_until(Largest_stop stop, std::vector<int>& rows,
+  Solve_statistics extend_largest_until(Stop stop, std::vector<int>& rows,
                                         std::vector<double>& values, Workspace& ws) const {
     if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
         ws.m_largest_values != rows.size())
       throw std::logic_error(
           "Localized_cholesky_solver: extend_largest() or extend_at_least() without an open "
           "solve_largest() or solve_at_least()");
+    return timed([&] { return largest_first(stop, rows, values, ws); });
+  }
+
+  // The statistics of solve(), their time measured.
+  template <class Solve>
+  static Solve_statistics timed(Solve solve) {
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = largest_first(stop, rows, values, ws);
+    Solve_statistics stats = solve();
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -473,50 +360,36 @@ class Localized_cholesky_solver {
       throw std::invalid_argument(
           "Localized_cholesky_solver: an extendable solve's width must be from 1 to its "
           "workspace's max_width()");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    Solve_statistics stats =
-        dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+    return timed([&] {
+      prepare(ws);
+      return dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
+    });
   }
 
   Solve_statistics solve_in_blocks(const std::vector<Rhs_entry>& entries, int width,
                                    const int* rows, std::size_t row_count, double* out,
                                    Workspace& ws, double drop_below) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    Solve_statistics total;
-    const int block = ws.max_width();
-    std::vector<Rhs_entry> chunk;
-    std::vector<double> chunk_out;
-    for (int first = 0; first < width; first += block) {
-      const int w = std::min(block, width - first);
-      const std::vector<Rhs_entry>* part = &entries;
-      if (width > block) {
+    return timed([&] {
+      prepare(ws);
+      const int block = ws.max_width();
+      if (width <= block) return dispatch(entries, width, rows, row_count, out, ws, drop_below);
+      Solve_statistics total;
+      std::vector<Rhs_entry> chunk;
+      std::vector<double> chunk_out;
+      for (int first = 0; first < width; first += block) {
+        const int w = std::min(block, width - first);
         chunk.clear();
         for (const Rhs_entry& e : entries)
           if (e.column >= first && e.column < first + w)
             chunk.push_back({e.row, e.column - first, e.value});
-        part = &chunk;
-      }
-      double* target = out;
-      if (width > block) {
         chunk_out.assign(row_count * static_cast<std::size_t>(w), 0.0);
-        target = chunk_out.data();
-      }
-      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, drop_below);
-      total += s;
-      if (width > block)
+        total += dispatch(chunk, w, rows, row_count, chunk_out.data(), ws, drop_below);
         for (std::size_t i = 0; i < row_count; ++i)
-          for (int c = 0; c < w; ++c)
-            out[i * width + first + c] = chunk_out[i * w + c];
-    }
-    total.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return total;
+          for (int c = 0; c < w; ++c) out[i * width + first + c] = chunk_out[i * w + c];
+      }
+      return total;
+    });
   }
 
   // A workspace of the right size with a zero block (an extendable solve
@@ -557,52 +430,19 @@ class Localized_cholesky_solver {
     return stats;
   }
 
-  // The bucket of a value for counting the values above a bound: its
-  // exponent and three leading mantissa bits (nonpositive values in 0), so
-  // larger values have higher (or equal) buckets.
-  static constexpr std::size_t value_buckets = std::size_t{1} << 14;
-  static std::size_t value_bucket(double value) {
-    if (!(value > 0)) return 0;
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return static_cast<std::size_t>(bits >> 49);
-  }
-
   // The back substitution of solve_largest and solve_at_least: pops the
   // frontier's supernode with the largest bound (the largest solved value
   // among its rows below; infinity on the right-hand side's paths, where the
-  // bound does not hold) until `stop` is met (the `count`-th largest value
-  // solved exceeds every bound left, or every bound left is below the
-  // threshold), solving each popped supernode in whole and pushing its
-  // children.
-  Solve_statistics largest_first(Largest_stop stop, std::vector<int>& rows,
-                                 std::vector<double>& values, Workspace& ws) const {
-    const std::size_t count = stop.count;
+  // bound does not hold) until `stop` is met, solving each popped supernode
+  // in whole and pushing its children.
+  Solve_statistics largest_first(Stop stop, std::vector<int>& rows, std::vector<double>& values,
+                                 Workspace& ws) const {
     const auto& F = m_factor;
     Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     const std::uint32_t s = ws.m_stamp;
-    auto& frontier = ws.m_frontier;
     Solve_statistics stats;
-    // Settled once every bound left is below the threshold, or once `count`
-    // values exceed every bound left. The values are
-    // counted in buckets of an eighth of a binade and a value counts as
-    // exceeding a bound only if its bucket is higher, so the search may go
-    // on up to a bucket longer than it must, never shorter; with it, no
-    // selection over the values is needed. Bounds only fall from pop to pop
-    // (a child's rows below are its parent's rows or rows below), so the
-    // count above the bounds only grows.
-    auto settled = [&](double bound) {
-      if (count == 0 || bound < stop.threshold) return true;
-      if (!(bound < std::numeric_limits<double>::infinity())) return false;
-      for (const std::size_t b = value_bucket(bound) + 1; ws.m_bucket_floor > b;)
-        ws.m_values_above += ws.m_bucket_count[--ws.m_bucket_floor];
-      return ws.m_values_above >= count;
-    };
-    while (!frontier.empty() && !settled(frontier.front().first)) {
-      std::pop_heap(frontier.begin(), frontier.end());
-      const int k = frontier.back().second;
-      frontier.pop_back();
+    for (int k; (k = ws.m_frontier.pop(stop)) != -1;) {
       const auto& sn = F.supernode[k];
       double* ys = y + static_cast<std::size_t>(sn.first_column);
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
@@ -613,11 +453,7 @@ class Localized_cholesky_solver {
       for (int c = 0; c < sn.ncol; ++c) {
         rows.push_back(F.permutation[sn.first_column + c]);
         values.push_back(ys[c]);
-        const std::size_t b = value_bucket(ys[c]);
-        ++ws.m_bucket_count[b];
-        ws.m_buckets_touched_from = std::min(ws.m_buckets_touched_from, b);
-        ws.m_buckets_touched_to = std::max(ws.m_buckets_touched_to, b + 1);
-        if (b >= ws.m_bucket_floor) ++ws.m_values_above;
+        ws.m_frontier.count(ys[c]);
       }
       for (const int* c = m_tree.children_begin(k); c != m_tree.children_end(k); ++c) {
         const int child = *c;
@@ -628,8 +464,7 @@ class Localized_cholesky_solver {
           bound = -std::numeric_limits<double>::infinity();
           for (int t = 0; t < cn.nbelow; ++t) bound = std::max(bound, y[below[t]]);
         }
-        frontier.push_back({bound, child});
-        std::push_heap(frontier.begin(), frontier.end());
+        ws.m_frontier.push(bound, child);
       }
     }
     ws.m_largest_values = values.size();
