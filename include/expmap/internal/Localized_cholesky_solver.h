@@ -54,7 +54,8 @@ struct Rhs_entry {
 /// `Workspace`, so many threads can solve at once with one workspace each.
 class Localized_cholesky_solver {
  public:
-  /// Widest block solved in one traversal; wider blocks are split.
+  /// Widest block solved in one traversal, and a workspace's width unless
+  /// it is made narrower; wider blocks are split.
   static constexpr int max_block_width = Supernode_kernels::max_width;
 
   /// Per-thread scratch memory of the solves, and a solve left open.
@@ -206,7 +207,7 @@ class Localized_cholesky_solver {
   void release(Workspace& ws) const {
     if (ws.m_open_width == 0) return;
     Supernode_kernels::with_width(ws.m_open_width,
-                      [&](auto width) { clear_block<decltype(width)::value>(ws); });
+                                  [&](auto width) { clear_block<decltype(width)::value>(ws); });
     ws.m_open_width = 0;
     ws.m_largest_open = false;
   }
@@ -275,7 +276,8 @@ class Localized_cholesky_solver {
   Solve_statistics extend_at_least(double threshold, std::vector<int>& rows,
                                    std::vector<double>& values, Workspace& ws) const {
     check_threshold(threshold);
-    return extend_largest_until(Stop{Largest_first_frontier::no_count, threshold}, rows, values, ws);
+    return extend_largest_until(Stop{Largest_first_frontier::no_count, threshold}, rows, values,
+                                ws);
   }
 
   /// Continues the last `solve_largest()` on `ws` until the `count` largest
@@ -511,7 +513,8 @@ class Localized_cholesky_solver {
   void read_rows(const int* rows, std::size_t row_count, double* out, const Workspace& ws,
                  int width = W) const {
     for (std::size_t i = 0; i < row_count; ++i) {
-      const double* x = ws.m_block + static_cast<std::size_t>(m_factor.inverse_permutation[rows[i]]) * W;
+      const std::size_t pivot = static_cast<std::size_t>(m_factor.inverse_permutation[rows[i]]);
+      const double* x = ws.m_block + pivot * W;
       for (int c = 0; c < width; ++c) out[i * width + c] = x[c];
     }
   }

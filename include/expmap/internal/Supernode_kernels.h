@@ -39,7 +39,11 @@ class Supernode_kernels {
   /// and the Poisson solve; the star solve of an angle estimator linear in
   /// the heat), wider blocks are padded to 4, 8, 12 or 16.
   static constexpr int width_for(int columns) {
-    return columns <= 2 ? columns : columns <= 4 ? 4 : columns <= 8 ? 8 : columns <= 12 ? 12 : 16;
+    return columns <= 2    ? columns
+           : columns <= 4  ? 4
+           : columns <= 8  ? 8
+           : columns <= 12 ? 12
+                           : 16;
   }
 
   /// Calls f(std::integral_constant<int, W>) with W = `width`, one of the
@@ -163,7 +167,8 @@ class Supernode_kernels {
     const int* below_rows = rows_below(sn);
     if (sn.rank >= 0) {
       low_rank_forward<W>(below, sn, runs.data(), runs.size(), ys, below_rows, y);
-      return read + (kept + static_cast<std::size_t>(sn.nbelow)) * static_cast<std::size_t>(sn.rank);
+      return read +
+             (kept + static_cast<std::size_t>(sn.nbelow)) * static_cast<std::size_t>(sn.rank);
     }
     for (int t = 0; t < sn.nbelow; ++t) {
       const T* l = below + static_cast<std::size_t>(t) * sn.ncol;
