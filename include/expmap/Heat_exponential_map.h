@@ -99,7 +99,8 @@ class Heat_exponential_map
       auto ws = make_workspace();
       if (m_options.query_threads > 1)
         ws->region_star_solve = internal::Localized_cholesky_solver::Workspace(
-            m_factors.heat.size(), m_factors.heat.number_of_supernodes());
+            m_factors.heat.size(), m_factors.heat.number_of_supernodes(),
+            internal::heat::star_solve_width(m_factors, false));
       return ws;
     });
   }

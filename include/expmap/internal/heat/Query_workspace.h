@@ -34,15 +34,27 @@ struct Star_solve {
   std::vector<double> heat;
 };
 
+/// The widest block a star solve (step 6) needs: two columns for the
+/// estimators linear in the heat (three with the boundary's Dirichlet
+/// column), else one per star vertex, which the solver splits into blocks
+/// of its widest kernel. The solver workspace's block is sized by it.
+inline int star_solve_width(const Heat_factors& factors, bool boundary) {
+  return is_linear_in_heat(factors.angle_estimator) ? (boundary ? 3 : 2)
+                                                     : Localized_cholesky_solver::max_block_width;
+}
+
 /// The state of one query, phase by phase.
 struct Workspace {
   Workspace(const Heat_factors& factors, std::size_t n)
-      : heat_solve(factors.heat.size(), factors.heat.number_of_supernodes()),
-        poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes()),
+      : heat_solve(factors.heat.size(), factors.heat.number_of_supernodes(),
+                   star_solve_width(factors, false)),
+        poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1),
+        region_star_solve(0, 0, star_solve_width(factors, false)),
         tentative(n) {
     if (factors.has_boundary())
       boundary_heat_solve = Localized_cholesky_solver::Workspace(
-          factors.boundary_heat.size(), factors.boundary_heat.number_of_supernodes());
+          factors.boundary_heat.size(), factors.boundary_heat.number_of_supernodes(),
+          star_solve_width(factors, true));
     in_region.resize(n);
     seen.resize(n);
     wanted.resize(n);

@@ -69,12 +69,8 @@ inline void choose_source_heat_pruning(const Context& c, int s, std::size_t coun
 inline Solve_statistics solve_source_heat_below(const Context& c, int s, Workspace& ws) {
   ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
   ws.heat.resize(ws.candidates.size());
-  if (ws.heat_drop_below == 0)
-    return c.factors.heat.solve_extendable(ws.rhs, 1, ws.candidates.data(), ws.candidates.size(),
-                                           ws.heat.data(), ws.heat_solve);
-  return c.factors.heat.solve_extendable_pruned(ws.rhs, 1, ws.candidates.data(),
-                                                ws.candidates.size(), ws.heat.data(),
-                                                ws.heat_solve, ws.heat_drop_below);
+  return c.factors.heat.solve_extendable(ws.rhs, 1, ws.candidates.data(), ws.candidates.size(),
+                                         ws.heat.data(), ws.heat_solve, ws.heat_drop_below);
 }
 
 inline Solve_statistics solve_source_heat(const Context& c, int s, Workspace& ws) {

@@ -118,11 +118,9 @@ inline Solve_statistics solve_star_heat(const Context& c, const Star_gradient& s
   out.heat.resize(rows.size() * width);
   const Localized_cholesky_solver& heat = c.factors.heat;
   const double drop_below = star_heat_drop_below(c, rows, ws);
-  if (drop_below == 0)
-    return heat.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(), out.heat.data(),
-                      solver);
-  Solve_statistics stats = heat.solve_pruned(out.rhs, static_cast<int>(width), rows.data(),
-                                             rows.size(), out.heat.data(), solver, drop_below);
+  Solve_statistics stats = heat.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
+                                      out.heat.data(), solver, drop_below);
+  if (drop_below == 0) return stats;
   // The gradient columns change sign, so pruning need not lower them: the
   // check is that every value read stays far above the threshold.
   if (drop_below > c.factors.pruning_tolerance * smallest_star_value(c, width, out.heat))
