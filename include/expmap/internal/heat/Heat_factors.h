@@ -166,28 +166,33 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
   for (std::size_t v = 0; v < mesh.number_of_vertices(); ++v)
     if (mesh.is_isolated(static_cast<int>(v))) identity_rows.push_back(static_cast<int>(v));
 
-  Sparse_matrix A = f.time_step * L;
-  for (int v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += mass[v];
-  make_identity_row(A, identity_rows);
-  f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
-  f.heat_is_m_matrix = is_m_matrix(A);
-  if (f.heat_is_m_matrix && options.pruning_tolerance > 0) {
-    const Eigen::VectorXd diagonal = A.diagonal();
-    f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
-    for (int v = 0; v < A.rows(); ++v) f.inverse_heat_diagonal[v] = 1.0 / diagonal[v];
-    f.pruning_tolerance = options.pruning_tolerance;
-  }
+  // The heat matrix A lives in this scope only: it is freed before the
+  // Poisson factorization, where the precomputation's memory peaks.
+  {
+    Sparse_matrix A = f.time_step * L;
+    for (int v = 0; v < A.rows(); ++v) A.coeffRef(v, v) += mass[v];
+    make_identity_row(A, identity_rows);
+    f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
+    f.heat_is_m_matrix = is_m_matrix(A);
+    if (f.heat_is_m_matrix && options.pruning_tolerance > 0) {
+      const Eigen::VectorXd diagonal = A.diagonal();
+      f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
+      for (int v = 0; v < A.rows(); ++v) f.inverse_heat_diagonal[v] = 1.0 / diagonal[v];
+      f.pruning_tolerance = options.pruning_tolerance;
+    }
 
-  // Loops shorter than the heat's length scale sqrt(t) are left out: such
-  // a pinhole barely changes the Neumann heat, while zero heat on it is a
-  // sink (ChineseDragon-10kv's three-vertex holes).
-  f.is_boundary = vertices_on_long_boundary_loops(mesh, std::sqrt(f.time_step));
-  if (f.has_boundary()) {
-    std::vector<int> dirichlet_rows = identity_rows;
-    for (std::size_t v = 0; v < f.is_boundary.size(); ++v)
-      if (f.is_boundary[v]) dirichlet_rows.push_back(static_cast<int>(v));
-    make_identity_row(A, dirichlet_rows);
-    f.boundary_heat = factor_locally<Solver>(A, "boundary heat", &f.heat, options.factor_precision);
+    // Loops shorter than the heat's length scale sqrt(t) are left out: such
+    // a pinhole barely changes the Neumann heat, while zero heat on it is a
+    // sink (ChineseDragon-10kv's three-vertex holes).
+    f.is_boundary = vertices_on_long_boundary_loops(mesh, std::sqrt(f.time_step));
+    if (f.has_boundary()) {
+      std::vector<int> dirichlet_rows = identity_rows;
+      for (std::size_t v = 0; v < f.is_boundary.size(); ++v)
+        if (f.is_boundary[v]) dirichlet_rows.push_back(static_cast<int>(v));
+      make_identity_row(A, dirichlet_rows);
+      f.boundary_heat =
+          factor_locally<Solver>(A, "boundary heat", &f.heat, options.factor_precision);
+    }
   }
 
   f.is_pinned.assign(mesh.number_of_vertices(), 0);

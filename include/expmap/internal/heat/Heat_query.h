@@ -94,7 +94,8 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
     if (retry) ++stats.region_retries;
     // Steps 1 and 2.
     bool whole_component = false;
-    stats += find_region(c, s, patch, target, wanted, component, growth, retry, whole_component, ws);
+    stats +=
+        find_region(c, s, patch, target, wanted, component, growth, retry, whole_component, ws);
 
     // Steps 3 and 4; with a second thread, step 6 beside them, on the whole region
     // (the patch is not known before the distance).

@@ -31,7 +31,8 @@ inline std::vector<std::size_t> select_patch(const Patch& patch, std::size_t tar
   if (patch.kind() == Patch::Kind::vertex_set) {
     order.push_back(0);  // the source
     for (int v : wanted)  // distinct, without the source
-      if (ws.in_region.is_marked(v)) order.push_back(static_cast<std::size_t>(ws.in_region.value(v)));
+      if (ws.in_region.is_marked(v))
+        order.push_back(static_cast<std::size_t>(ws.in_region.value(v)));
   } else {
     order.resize(ws.region.size());
     std::iota(order.begin(), order.end(), std::size_t{0});
