@@ -219,7 +219,8 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
     if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query.trim_folds);
 }
 
 }  // namespace expmap

@@ -206,7 +206,8 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
   ws->wanted.next_query();
   for (int v : q.wanted) ws->wanted.mark(v, 0);
   if ((q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
-    return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+    return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                        q.frame, query.trim_folds);
 
   // A hair more than the radius, so that rounding cannot drop a face that
   // a geodesic of length exactly R touches.
@@ -261,7 +262,8 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
     e.angle = q.frame.angle_of(first_direction(ws->path, ps, e.distance));
     e.vertex = ball.mesh_vertex[e.vertex];
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query.trim_folds);
 }
 
 }  // namespace expmap

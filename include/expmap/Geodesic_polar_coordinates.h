@@ -240,7 +240,8 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
                      });
     ws->entries.resize(keep);
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query.trim_folds);
 }
 
 }  // namespace expmap

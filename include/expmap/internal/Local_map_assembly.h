@@ -3,12 +3,17 @@
 #ifndef EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 #define EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 
+#include <expmap/Fold_free_radius.h>
 #include <expmap/Local_map.h>
+#include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Nearest_first.h>
 #include <expmap/internal/Tangent_frame.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 namespace expmap {
@@ -32,14 +37,46 @@ inline double wrap_angle(double a) {
   return a;
 }
 
+/// The fold-free disk of `map` from the faces of `mesh`, the same triangles
+/// `patch_triangles()` finds in the user's mesh. `map.indices` are the
+/// user's indices; `mesh` may be renumbered.
+template <class VertexDescriptor>
+Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDescriptor>& map) {
+  // Vertex (as stored) -> position in the map; hashed, so a small patch of
+  // a large mesh costs nothing per mesh vertex.
+  std::unordered_map<int, std::size_t> position;
+  position.reserve(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) position.emplace(mesh.from_original(map.indices[i]), i);
+  return fold_free_disk(map, [&](auto visit) {
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      const int v = mesh.from_original(map.indices[i]);
+      for (int p = mesh.vertex_face_start[v]; p < mesh.vertex_face_start[v + 1]; ++p) {
+        const std::array<int, 3>& face = mesh.face[mesh.vertex_face[p]];
+        std::array<std::size_t, 3> corner{};
+        bool inside = true;
+        for (int k = 0; k < 3 && inside; ++k) {
+          const auto it = position.find(face[k]);
+          inside = it != position.end();
+          if (inside) corner[k] = it->second;
+        }
+        // Each face once: from its corner nearest to the source.
+        if (inside && i == std::min({corner[0], corner[1], corner[2]})) visit(corner);
+      }
+    }
+  });
+}
+
 /// Fills a `Local_map` the way every method reports it: the source first
 /// (r = 0, theta = 0), then the entries nearest first (ties by vertex
-/// index, so results do not depend on traversal order). Entries for the
-/// source itself are dropped. `entries` is sorted in place.
+/// index, so results do not depend on traversal order), with its fold-free
+/// radius, cut to that disk if `trim_folds`. Entries for the source itself
+/// are dropped. `entries` is sorted in place; their vertices and `source`
+/// are indices of the user's mesh, which `mesh` stores (maybe renumbered).
 template <class VertexDescriptor>
-Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_entry>& entries,
+Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
+                                               std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,
-                                               const Tangent_frame& frame) {
+                                               const Tangent_frame& frame, bool trim_folds) {
   auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
@@ -66,6 +103,11 @@ Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_ent
   add(source, 0.0, 0.0);
   for (const Polar_entry& e : entries)
     if (e.vertex != source) add(e.vertex, e.distance, wrap_angle(e.angle));
+  const Fold_free_disk disk = fold_free_disk(mesh, map);
+  if (trim_folds)
+    trim_to_disk(map, disk);
+  else
+    map.fold_free_radius = disk.radius;
   return map;
 }
 
