@@ -38,8 +38,13 @@ Fold_free_disk fold_free_disk(const Local_map<VertexDescriptor>& map,
                               ForEachTriangle for_each_triangle) {
   Fold_free_disk disk;
   if (map.size() > 0) disk.radius = *std::max_element(map.distance.begin(), map.distance.end());
+  // Each vertex's (u, v) once, not once per triangle: the cosines and sines
+  // would cost more than the rest.
+  std::vector<std::array<double, 2>> uv(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) uv[i] = map.uv(i);
+  const auto uv_of = [&](std::size_t i) { return uv[i]; };
   for_each_triangle([&](const std::array<std::size_t, 3>& corner) {
-    if (signed_uv_area2(map, corner) > 0) return;
+    if (signed_uv_area2(uv_of, corner) > 0) return;
     disk.folds = true;
     disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]], map.distance[corner[1]],
                                                   map.distance[corner[2]]}));

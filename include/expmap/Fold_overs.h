@@ -88,16 +88,15 @@ patch_triangles(const TriangleMesh& tm, const Local_map<VertexDescriptor>& map) 
 namespace internal {
 
 /// Twice the signed (u, v) area of the triangle whose corners are at these
-/// positions of `map` (in the face's order), evaluated from the corner
-/// nearest the source: rounding then does not depend on which corner a mesh
-/// lists first, so the methods (on their copy of the mesh) and
-/// `patch_triangles()` (on the user's) agree on every sign.
-template <class VertexDescriptor>
-double signed_uv_area2(const Local_map<VertexDescriptor>& map, std::array<std::size_t, 3> corner) {
+/// positions of a map (in the face's order), `uv(i)` giving the coordinates
+/// of position i, evaluated from the corner nearest the source: rounding
+/// then does not depend on which corner a mesh lists first, so the methods
+/// (on their copy of the mesh) and `patch_triangles()` (on the user's) agree
+/// on every sign.
+template <class Uv>
+double signed_uv_area2(const Uv& uv, std::array<std::size_t, 3> corner) {
   std::rotate(corner.begin(), std::min_element(corner.begin(), corner.end()), corner.end());
-  const auto a = map.uv(corner[0]);
-  const auto b = map.uv(corner[1]);
-  const auto c = map.uv(corner[2]);
+  const std::array<double, 2> a = uv(corner[0]), b = uv(corner[1]), c = uv(corner[2]);
   return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
 }
 
@@ -110,7 +109,7 @@ double signed_uv_area2(const Local_map<VertexDescriptor>& map, std::array<std::s
 template <class VertexDescriptor, class FaceDescriptor>
 double signed_uv_area2(const Local_map<VertexDescriptor>& map,
                        const Patch_triangle<FaceDescriptor>& triangle) {
-  return internal::signed_uv_area2(map, triangle.corner);
+  return internal::signed_uv_area2([&](std::size_t i) { return map.uv(i); }, triangle.corner);
 }
 
 /// \ingroup PkgExpmapRef

@@ -130,7 +130,8 @@ class Heat_exponential_map
         context(), s, frame, patch, target, wanted, *ws, statistics);
     Result result =
         internal::assemble_local_map(mesh, static_cast<int>(mesh.to_original(s)), entries,
-                                     m_indexed.descriptors, frame, query.trim_folds);
+                                     m_indexed.descriptors, frame, query.trim_folds,
+                                     ws->map_position);
     result.statistics = statistics;
     return result;
   }
