@@ -1,22 +1,18 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// expmap-pruned-bench: the heat method's precomputation phase by phase
-// (time and peak memory of each) and its heat solves with and without
-// pruning (Localized_cholesky_solver::solve_pruned), on one mesh.
+// expmap-pruned-bench: the heat method's heat solves with and without
+// pruning (Localized_cholesky_solver::solve with drop_below), on one mesh.
 //
 //   expmap-pruned-bench --mesh FILE [--fractions LIST] [--sources N]
 //                       [--seed S] [--time-factor M] [--tolerances LIST]
-//                       [--protocol-tolerance T] [--hint-safety S] [--reuse-ordering]
+//                       [--protocol-tolerance T] [--hint-safety S]
 //
-// Precomputation: the steps of Heat_exponential_map's constructor with the
-// library's defaults (locality renumbering, intrinsic Delaunay, cotan
-// operators, heat system M + tL with t = M h^2, CHOLMOD, supernodal copy,
-// then the Poisson system with the heat copy held), each with its time and
-// the peak resident memory (VmHWM, reset before each step) and resident
-// memory after it. --reuse-ordering factors the Poisson system with the
-// heat factor's ordering (Cholmod_solver::factor(A, ordering)) instead of
-// ordering it with METIS again.
+// Precomputation: Heat_exponential_map's own (locality renumbering, then
+// internal::heat::factor_heat_operators with the default Heat_options but
+// --time-factor), with the time and peak resident memory (VmHWM) of the
+// reading, the renumbering and the factorizations, and resident memory
+// after each.
 //
 // Queries: --sources random sources (std::mt19937(seed) over the input's
 // vertex indices, as expmap-bench picks them); per fraction f the patch is
@@ -30,7 +26,8 @@
 // per fraction and tau: median times, median factor entries read, and the
 // largest error over all sources of any returned value relative to itself
 // (rel) and relative to the largest value of its column (max-rel).
-// "query:" rows: solve_pruned_relative as a heat query would call it, with
+// "query:" rows: a pruned solve from a guess of its smallest value, checked
+// and solved again if the guess was too large (as a heat query does), with
 // --protocol-tolerance (1e-14). Source on candidates: the hint is the
 // previous source's heat at its source times exp(its decay rate * this
 // query's candidate radius) times --hint-safety (1e-10; a hint too small
@@ -46,12 +43,12 @@
 #include "Timing.h"
 
 #include <expmap/Cholmod_solver.h>
-#include <expmap/internal/Cotan_operators.h>
+#include <expmap/Heat_options.h>
 #include <expmap/internal/Indexed_mesh.h>
-#include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Region_growing.h>
+#include <expmap/internal/heat/Heat_factors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -81,7 +78,6 @@ struct Options {
   std::vector<double> tolerances{1e-12, 1e-14, 1e-16};
   double protocol_tolerance = 1e-14;
   double hint_safety = 1e-10;
-  bool reuse_ordering = false;
   std::size_t sources = 20;
   unsigned seed = 1;
   double time_factor = 10.0;
@@ -108,7 +104,6 @@ Options parse(int argc, char** argv) {
     else if (arg == "--tolerances") o.tolerances = parse_list(value());
     else if (arg == "--protocol-tolerance") o.protocol_tolerance = std::stod(value());
     else if (arg == "--hint-safety") o.hint_safety = std::stod(value());
-    else if (arg == "--reuse-ordering") o.reuse_ordering = true;
     else if (arg == "--sources") o.sources = std::stoul(value());
     else if (arg == "--seed") o.seed = static_cast<unsigned>(std::stoul(value()));
     else if (arg == "--time-factor") o.time_factor = std::stod(value());
@@ -135,23 +130,6 @@ class Phase_log {
   Stopwatch m_watch;
 };
 
-// The factor of A in the form the localized solves traverse.
-// With an `ordering`, CHOLMOD takes it instead of ordering A with METIS.
-std::unique_ptr<Localized_cholesky_solver> factor(const expmap::internal::Sparse_matrix& A,
-                                                  const std::string& name, Phase_log& log,
-                                                  const std::vector<int>* ordering = nullptr) {
-  expmap::Cholmod_solver solver;
-  if (ordering)
-    solver.factor(A, *ordering);
-  else
-    solver.factor(A);
-  log.done(name + ": CHOLMOD (" + std::to_string(solver.factor_nonzeros() / 1000000) + "M)");
-  auto local = std::make_unique<Localized_cholesky_solver>(solver.factor_view());
-  log.done(name + ": supernodal copy (" + std::to_string(local->number_of_entries() / 1000000) +
-           "M)");
-  return local;
-}
-
 struct Solve_record {
   std::vector<double> ms, entries;
   double worst_relative = 0, worst_max_relative = 0;
@@ -170,6 +148,26 @@ void compare(const std::vector<double>& values, const std::vector<double>& exact
       record.worst_max_relative = std::max(record.worst_max_relative, error / largest);
     }
   }
+}
+
+// A pruned solve with drop_below = tau * `hint`, a guess of the smallest
+// magnitude it returns, checked as the solver's documentation advises: if
+// the guess was too large (drop_below above 2 tau times the smallest value
+// returned; 2 is room for its rounding), solved again with tau times that
+// value, which pruning the heat's nonnegative inverse only lowers. Sets
+// `solved_again` if it did.
+expmap::Solve_statistics solve_from_hint(const Localized_cholesky_solver& heat,
+                                         const std::vector<Rhs_entry>& rhs, int width,
+                                         const int* rows, std::size_t row_count, double* out,
+                                         Localized_cholesky_solver::Workspace& ws, double tau,
+                                         double hint, bool& solved_again) {
+  const double drop_below = tau * hint;
+  auto stats = heat.solve(rhs, width, rows, row_count, out, ws, drop_below);
+  const double smallest = Localized_cholesky_solver::smallest_magnitude(
+      out, row_count * static_cast<std::size_t>(width));
+  solved_again = drop_below > 2 * tau * smallest;
+  if (solved_again) stats += heat.solve(rhs, width, rows, row_count, out, ws, tau * smallest);
+  return stats;
 }
 
 void print_row(const char* what, double tolerance, const Solve_record& r) {
@@ -194,20 +192,13 @@ int main(int argc, char** argv) try {
       indexed.arrays, expmap::internal::locality_order(indexed.arrays));
   const auto& arrays = indexed.arrays;
   log.done("mesh arrays, locality order");
-  expmap::internal::Intrinsic_triangulation tri = arrays.intrinsic_triangulation();
-  expmap::internal::make_intrinsic_delaunay(tri);
-  log.done("intrinsic Delaunay");
-  const auto shapes = expmap::internal::triangle_shapes(tri);
-  expmap::internal::Sparse_matrix L = expmap::internal::cotan_laplacian(tri, shapes, 0.0);
-  expmap::internal::Sparse_matrix heat_matrix = o.time_factor * arrays.mean_edge_length *
-                                                arrays.mean_edge_length * L;
-  heat_matrix += expmap::internal::Sparse_matrix(
-      expmap::internal::lumped_mass(tri, shapes).asDiagonal());
-  log.done("operators");
-  const auto heat = factor(heat_matrix, "heat", log);
-  expmap::internal::make_identity_row(L, {0});
-  const auto poisson = factor(L, o.reuse_ordering ? "Poisson, heat ordering" : "Poisson", log,
-                              o.reuse_ordering ? &heat->permutation() : nullptr);
+  expmap::Heat_options heat_options;
+  heat_options.time_factor = o.time_factor;
+  const auto factors = expmap::internal::heat::factor_heat_operators<expmap::Cholmod_solver>(
+      arrays, expmap::checked(heat_options));
+  log.done("operators and factorizations");
+  const Localized_cholesky_solver* heat = &factors.heat;
+  const Localized_cholesky_solver* poisson = &factors.poisson;
   std::printf("  tree heights: heat %d, Poisson %d; %zu heat supernodes\n", heat->tree_height(),
               poisson->tree_height(), heat->number_of_supernodes());
 
@@ -272,8 +263,8 @@ int main(int argc, char** argv) try {
         smallest_ratio = std::min(smallest_ratio, smallest / largest);
         for (std::size_t k = 0; k < o.tolerances.size(); ++k) {
           watch.restart();
-          const auto p = heat->solve_pruned(*rhs[solve], widths[solve], nearest.data(), rows[solve],
-                                            pruned.data(), *ws, o.tolerances[k] * smallest);
+          const auto p = heat->solve(*rhs[solve], widths[solve], nearest.data(), rows[solve],
+                                     pruned.data(), *ws, o.tolerances[k] * smallest);
           auto& record = (*pruned_record[solve])[k];
           record.ms.push_back(watch.milliseconds());
           record.entries.push_back(static_cast<double>(p.factor_entries));
@@ -291,11 +282,12 @@ int main(int argc, char** argv) try {
       const double radius = tentative[nearest.back()];  // graph distance of the farthest row
       const double distance_hint =
           o.hint_safety * previous_at_source * std::exp(previous_rate * radius);
-      auto stats = heat->solve_pruned_relative(source_rhs, 1, nearest.data(), rows[0],
-                                               heat_values.data(), *ws, tau, distance_hint);
+      bool solved_again = false;
+      auto stats = solve_from_hint(*heat, source_rhs, 1, nearest.data(), rows[0],
+                                   heat_values.data(), *ws, tau, distance_hint, solved_again);
       const double smallest_heat =
           Localized_cholesky_solver::smallest_magnitude(heat_values.data(), heat_values.size());
-      distance_retries += tau * distance_hint > 2 * tau * smallest_heat;
+      distance_retries += solved_again;
       previous_at_source = heat_values[0];
       previous_rate = std::log(smallest_heat / heat_values[0]) / radius;
       const double star_hint =
@@ -303,13 +295,11 @@ int main(int argc, char** argv) try {
       protocol_distance.ms.push_back(watch.milliseconds());
       protocol_distance.entries.push_back(static_cast<double>(stats.factor_entries));
       watch.restart();
-      stats = heat->solve_pruned_relative(star_rhs, width, nearest.data(), rows[1],
-                                          star_values.data(), *ws, tau, star_hint);
+      stats = solve_from_hint(*heat, star_rhs, width, nearest.data(), rows[1], star_values.data(),
+                              *ws, tau, star_hint, solved_again);
       protocol_star.ms.push_back(watch.milliseconds());
       protocol_star.entries.push_back(static_cast<double>(stats.factor_entries));
-      star_retries += tau * star_hint >
-                      2 * tau * Localized_cholesky_solver::smallest_magnitude(star_values.data(),
-                                                                              star_values.size());
+      star_retries += solved_again;
       // The Poisson solve of the same query (not pruned: its solution does
       // not decay), with a right-hand side on the whole region, the hottest
       // 1/1.3 of the candidates (here the nearest): its cost depends only on

@@ -48,7 +48,6 @@ struct Compute_arguments {
   std::optional<std::size_t> vertex_count;
   std::string method = "heat";
   std::optional<double> time_factor;
-  std::optional<double> distance_time_factor;
   std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
   std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
   std::optional<std::string> factor_precision;  // "double" or "single"
@@ -58,6 +57,7 @@ struct Compute_arguments {
   std::optional<std::array<double, 3>> reference;
   bool triangulate = true;  // --no-triangulate refuses polygonal faces instead
   bool repair = false;
+  bool trim_folds = false;  // --trim-folds: each map cut to its fold-free disk
   std::vector<Output> outputs;
   bool help = false;
 };
@@ -234,8 +234,6 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       method_given = true;
     } else if (name == "--time-factor") {
       positive_real(a.time_factor);
-    } else if (name == "--distance-time-factor") {
-      positive_real(a.distance_time_factor);
     } else if (name == "--laplacian") {
       one_of(a.laplacian, "direct", "intrinsic-delaunay");
     } else if (name == "--vertex-area") {
@@ -277,6 +275,9 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
         a.repair = true;
       else
         a.triangulate = name == "--triangulate";
+    } else if (name == "--trim-folds") {
+      if (inline_value) throw Usage_error(name + " takes no value");
+      a.trim_folds = true;
     } else if (name == "-o" || name == "--output") {
       const std::string path = take_value();
       a.outputs.push_back({path, output_format(path)});

@@ -86,7 +86,6 @@ using Heat = expmap::Heat_exponential_map<Mesh>;
 expmap::Heat_options heat_options(const Compute_arguments& a) {
   expmap::Heat_options options;
   if (a.time_factor) options.time_factor = *a.time_factor;
-  if (a.distance_time_factor) options.distance_time_factor = *a.distance_time_factor;
   if (a.laplacian == std::string("intrinsic-delaunay"))
     options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   else if (a.laplacian == std::string("direct"))
@@ -127,8 +126,6 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   std::ostringstream d;
   // Short enough for the SVG caption's one line.
   d << "heat (m = " << options.time_factor;
-  if (options.distance_time_factor && *options.distance_time_factor != options.time_factor)
-    d << ", distance m = " << *options.distance_time_factor;
   d << ", "
     << (options.laplacian == expmap::Laplacian_mode::direct ? "direct" : "iDT")
     << (options.vertex_area == expmap::Vertex_area::barycentric ? ", barycentric areas" : "")
@@ -204,7 +201,7 @@ class Batch_output {
       if (output.format != expmap_cli::Output_format::csv) continue;
       m_csv.emplace_back(output.path);
       if (!m_csv.back()) throw Runtime_error("cannot create output file '" + output.path + "'");
-      m_csv.back() << "source,vertex,r,theta,u,v\n";
+      m_csv.back() << "source,vertex,r,theta,u,v,fold_free_radius\n";
     }
     m_opened = true;
   }
@@ -337,6 +334,9 @@ std::string map_options_help() {
        "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
        "                       1 maps the source's whole connected component\n"
        "  --vertices K         the K >= 1 vertices nearest to the source\n"
+       "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
+       "                       the vertices nearer than the nearest flipped\n"
+       "                       triangle's farthest corner, so none is flipped\n"
        "method:\n"
        "  --method M           default: heat; one of\n";
   for (const Method& m : methods) {
@@ -348,12 +348,6 @@ std::string map_options_help() {
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
-       "  --distance-time-factor T  heat only: a diffusion time of its own for the\n"
-       "                       distance (one more factorization); --time-factor then\n"
-       "                       sets the angles' time. --time-factor 50\n"
-       "                       --distance-time-factor 10 gives more accurate angles on\n"
-       "                       finely meshed smooth surfaces (doc/time_factor.md)\n"
-       "                       (default: the --time-factor)\n"
        "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
        "                       robust on poorly shaped triangles\n"
        "                       (default: intrinsic-delaunay)\n"
@@ -370,9 +364,9 @@ std::string map_options_help() {
        "                       same map up to round-off (default: 1; expmap batch on\n"
        "                       more than one thread gives each a source and each map\n"
        "                       one thread)\n"
-       "  --angles A           heat only: how the angle is read off the heat at the\n"
-       "                       source's one-ring: heat-quadratic-fit (least-squares\n"
-       "                       quadratic of h; two solves) | heat-gradient (the paper's\n"
+       "  --angles A           heat only: how the angle is read off the heat around the\n"
+       "                       source: heat-quadratic-fit (least-squares quadratic of\n"
+       "                       h on the two-ring; two solves) | heat-gradient (the paper's\n"
        "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
        "                       log-heat-quadratic-fit (of log h; one solve per\n"
        "                       neighbour) (default: heat-quadratic-fit)\n"
@@ -400,11 +394,12 @@ std::string map_options_help() {
 
 std::string compute_help() {
   return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-         "                      [--method M] [--time-factor T] [--distance-time-factor T]\n"
+         "                      [--method M] [--time-factor T]\n"
          "                      [--laplacian L] [--vertex-area A]\n"
          "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
-         "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
+         "                      [--no-triangulate] [--repair] [--trim-folds]\n"
+         "                      -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
          "  --source V           source vertex, 0-based index in file order (required;\n"
@@ -420,17 +415,18 @@ std::string compute_help() {
          "  -h, --help           this help\n"
          "\n"
          "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
-         "max r, flipped triangles) goes to stdout; errors go to stderr as\n"
+         "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
          "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
 }
 
 std::string batch_help() {
   return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--distance-time-factor T] [--laplacian L] [--vertex-area A]\n"
+         "                    [--laplacian L] [--vertex-area A]\n"
          "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                    [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+         "                    [--trim-folds]\n"
          "                    -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
@@ -442,11 +438,14 @@ std::string batch_help() {
          "  --threads N          queries run on N threads (default: 0, all cores)\n" +
          map_options_help() +
          "output (at least one, format by extension; may repeat):\n"
-         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v; per source its\n"
-         "                             patch vertices, nearest first\n"
+         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v,fold_free_radius;\n"
+         "                             per source its patch vertices, nearest first,\n"
+         "                             each row with its source's fold-free radius\n"
          "                       .npz  NumPy arrays (numpy.load): sources (k),\n"
-         "                             offsets (k+1), vertex, r, theta, u, v; rows\n"
-         "                             offsets[i] to offsets[i+1] belong to sources[i]\n"
+         "                             offsets (k+1), vertex, r, theta, u, v,\n"
+         "                             fold_free_radius (k, NaN where a query failed);\n"
+         "                             rows offsets[i] to offsets[i+1] belong to\n"
+         "                             sources[i]\n"
          "  -h, --help           this help\n"
          "\n"
          "A progress bar (maps done, maps per second, time left) goes to stderr when it\n"
@@ -551,11 +550,11 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 // costly part: its settings apply to it, and the outputs' folders exist.
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
-  if (!method.takes_heat_options && (a.time_factor || a.distance_time_factor || a.laplacian ||
+  if (!method.takes_heat_options && (a.time_factor || a.laplacian ||
                                      a.vertex_area || a.factor_precision || a.query_threads ||
                                      a.angles || a.near_source_blend))
     throw Usage_error(
-        "--time-factor, --distance-time-factor, --laplacian, --vertex-area, "
+        "--time-factor, --laplacian, --vertex-area, "
         "--factor-precision, --query-threads, --angles and --near-source-blend apply only to "
         "--method heat");
   for (const auto& output : a.outputs) {
@@ -609,6 +608,7 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
       find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a);
   expmap::Query_options query;
   query.reference_direction = a.reference;
+  query.trim_folds = a.trim_folds;
 
   Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
@@ -624,6 +624,10 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
               a.source);
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
+  // Where the map is one-to-one, against the patch's own radius.
+  std::printf("fold-free:   %.6g", run.map.fold_free_radius);
+  if (max_r > 0) std::printf(" (%.3f of max r)", run.map.fold_free_radius / max_r);
+  std::printf("%s\n", a.trim_folds ? ", trimmed by --trim-folds" : "");
   for (const auto& output : a.outputs) {
     write_output(output, input, run);
     std::printf("wrote:       %s\n", output.path.c_str());
@@ -679,6 +683,7 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   const std::vector<std::size_t> sources = batch_sources(a, input);
   expmap::Query_options query;
   query.reference_direction = a.reference;
+  query.trim_folds = a.trim_folds;
 
   Batch_output output(a.outputs, input.report.file_index);
   Batch_run run = with_repair_hint(

@@ -8,9 +8,8 @@
 /// order kept), and the measures the studies report of a mesh (mean edge
 /// length h, fraction of non-Delaunay edges).
 
+#include "Analytic_surfaces.h"
 #include "Common.h"
-
-#include <expmap/Analytic_surfaces.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
@@ -23,15 +22,15 @@
 
 namespace expmap_evaluation {
 
-inline Mesh to_mesh(const expmap::Triangle_soup& soup) {
+inline Mesh to_mesh(const expmap_analytic::Triangle_soup& soup) {
   Mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   return mesh;
 }
 
 /// The soup of a Surface_mesh (vertex and face order kept).
-inline expmap::Triangle_soup to_soup(const Mesh& mesh) {
-  expmap::Triangle_soup soup;
+inline expmap_analytic::Triangle_soup to_soup(const Mesh& mesh) {
+  expmap_analytic::Triangle_soup soup;
   for (auto v : vertices(mesh)) {
     const Point& p = mesh.point(v);
     soup.points.push_back({{p.x(), p.y(), p.z()}});
@@ -45,7 +44,7 @@ inline expmap::Triangle_soup to_soup(const Mesh& mesh) {
   return soup;
 }
 
-inline double mean_edge_length(const expmap::Triangle_soup& soup) {
+inline double mean_edge_length(const expmap_analytic::Triangle_soup& soup) {
   // Over triangle sides: each interior edge counts twice, boundary edges
   // once, as in the library's h (Mesh_arrays) up to that weighting.
   double sum = 0;
@@ -75,7 +74,7 @@ inline double mean_edge_length(const Mesh& mesh) {
 /// Fraction of the interior edges of a soup whose two opposite angles sum
 /// to more than pi (by more than 1e-9): the edges that make the cotan
 /// Laplacian lose its positive weights.
-inline double non_delaunay_fraction(const expmap::Triangle_soup& soup) {
+inline double non_delaunay_fraction(const expmap_analytic::Triangle_soup& soup) {
   std::map<std::pair<int, int>, double> opposite;  // edge -> sum of opposite angles
   std::map<std::pair<int, int>, int> count;
   for (const auto& t : soup.triangles)

@@ -9,10 +9,10 @@
 /// distance field at them; point location in the xy projection of a height
 /// field, to place reference points given by (x, y).
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Statistics.h"
-
-#include <expmap/Analytic_surfaces.h>
 
 #include <algorithm>
 #include <array>
@@ -180,10 +180,10 @@ inline Errors field_errors(const std::vector<double>& field, const std::vector<R
 
 /// The vertices of `soup` within geodesic distance `radius` of `source`
 /// (not the source itself) as reference points, with the polar coordinates
-/// `exact(point)` (an expmap::Polar) of an analytic map.
+/// `exact(point)` (an expmap_analytic::Polar) of an analytic map.
 template <class Exact>
-std::vector<Reference_point> vertex_references(const expmap::Triangle_soup& soup, std::size_t source,
-                                               double radius, Exact exact) {
+std::vector<Reference_point> vertex_references(const expmap_analytic::Triangle_soup& soup,
+                                               std::size_t source, double radius, Exact exact) {
   std::vector<Reference_point> ref;
   for (std::size_t v = 0; v < soup.points.size(); ++v) {
     if (v == source) continue;
@@ -201,7 +201,7 @@ std::vector<Reference_point> vertex_references(const expmap::Triangle_soup& soup
 /// Point location in the xy projection of a height-field (or planar) mesh.
 class Xy_locator {
  public:
-  explicit Xy_locator(const expmap::Triangle_soup& soup) : m_soup(soup) {
+  explicit Xy_locator(const expmap_analytic::Triangle_soup& soup) : m_soup(soup) {
     double x1 = -1e300, y1 = -1e300;
     m_x0 = m_y0 = 1e300;
     for (const auto& p : soup.points) {
@@ -263,7 +263,7 @@ class Xy_locator {
   int cell_y(double y) const {
     return std::clamp(static_cast<int>((y - m_y0) / m_cell), 0, m_ny - 1);
   }
-  const expmap::Triangle_soup& m_soup;
+  const expmap_analytic::Triangle_soup& m_soup;
   double m_x0, m_y0, m_cell;
   int m_nx, m_ny;
   std::vector<std::vector<int>> m_buckets;

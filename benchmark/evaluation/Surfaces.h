@@ -8,10 +8,9 @@
 /// spheres, jittered Delaunay height fields, and the choice of the family
 /// member whose mean edge length is closest to a target.
 
+#include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Meshes.h"
-
-#include <expmap/Analytic_surfaces.h>
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -33,9 +32,9 @@ namespace expmap_evaluation {
 /// split into k^2 triangles on a barycentric lattice, points projected onto
 /// the unit sphere. 10 k^2 + 2 vertices; unlike the icosphere (k = 2^s) any
 /// resolution can be hit.
-inline expmap::Triangle_soup geodesic_sphere(int k) {
-  const expmap::Triangle_soup ico = expmap::make_icosphere(0, 1.0);
-  expmap::Triangle_soup soup;
+inline expmap_analytic::Triangle_soup geodesic_sphere(int k) {
+  const expmap_analytic::Triangle_soup ico = expmap_analytic::make_icosphere(0, 1.0);
+  expmap_analytic::Triangle_soup soup;
   // Key: the icosahedron vertices with non-zero lattice weight, sorted.
   std::map<std::array<int, 6>, int> index;
   auto vertex = [&](const std::array<int, 3>& corners, const std::array<int, 3>& weights) {
@@ -79,8 +78,8 @@ inline expmap::Triangle_soup geodesic_sphere(int k) {
 /// `jitter` times the lattice spacing, projected back onto the sphere, and
 /// triangulated as the convex hull of the points (the spherical Delaunay
 /// triangulation). Seeded std::mt19937, so deterministic.
-inline expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed) {
-  const expmap::Triangle_soup lattice = geodesic_sphere(k);
+inline expmap_analytic::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed) {
+  const expmap_analytic::Triangle_soup lattice = geodesic_sphere(k);
   const double spacing = mean_edge_length(lattice);
   std::mt19937 rng(seed);
   auto uniform = [&rng]() { return double(rng()) / 4294967296.0; };
@@ -105,7 +104,7 @@ inline expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed
   // studies ran first). Renumber them in the order of the jittered points and
   // sort the faces, so vertex indices -- and the sources picked by index --
   // are the same in every run.
-  const expmap::Triangle_soup unordered = to_soup(hull);
+  const expmap_analytic::Triangle_soup unordered = to_soup(hull);
   std::map<std::array<double, 3>, int> input_index;
   for (std::size_t i = 0; i < points.size(); ++i)
     input_index[{{points[i].x(), points[i].y(), points[i].z()}}] = static_cast<int>(i);
@@ -115,7 +114,7 @@ inline expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed
     return input_index.at(unordered.points[a]) < input_index.at(unordered.points[b]);
   });
   std::vector<int> new_index(order.size());
-  expmap::Triangle_soup soup;
+  expmap_analytic::Triangle_soup soup;
   for (std::size_t k = 0; k < order.size(); ++k) {
     new_index[order[k]] = static_cast<int>(k);
     soup.points.push_back(unordered.points[order[k]]);
@@ -135,10 +134,11 @@ inline expmap::Triangle_soup jittered_sphere(int k, double jitter, unsigned seed
 /// of length up to `jitter * edge`, Delaunay-triangulated in the plane and
 /// lifted by `height`. Vertex 0 is the origin.
 template <class Height>
-expmap::Triangle_soup jittered_height_field(double edge, double extent, double jitter, unsigned seed,
-                                            Height height) {
+expmap_analytic::Triangle_soup jittered_height_field(double edge, double extent, double jitter,
+                                                     unsigned seed, Height height) {
   const int rings = static_cast<int>(std::ceil(extent / (edge * std::sqrt(3.0) / 2)));
-  const expmap::Triangle_soup lattice = expmap::make_equilateral_grid(rings, edge);
+  const expmap_analytic::Triangle_soup lattice =
+      expmap_analytic::make_equilateral_grid(rings, edge);
   const std::size_t outer_ring_start = std::size_t(1 + 3 * rings * (rings - 1));
   std::mt19937 rng(seed);
   auto uniform = [&rng]() { return double(rng()) / 4294967296.0; };
@@ -146,7 +146,7 @@ expmap::Triangle_soup jittered_height_field(double edge, double extent, double j
   using Tds = CGAL::Triangulation_data_structure_2<Vb>;
   using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
   Delaunay dt;
-  expmap::Triangle_soup soup;
+  expmap_analytic::Triangle_soup soup;
   for (std::size_t i = 0; i < lattice.points.size(); ++i) {
     double x = lattice.points[i][0], y = lattice.points[i][1];
     if (i > 0 && i < outer_ring_start) {

@@ -6,6 +6,8 @@
 // union-jack meshes) at three mean edge lengths; E_d and E_a of every method
 // against analytic references or geodesics shot with Boost.Odeint.
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Formatting.h"
 #include "Geodesic_shooting.h"
@@ -16,7 +18,6 @@
 #include "Studies.h"
 #include "Surfaces.h"
 
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Exact_exponential_map.h>
 #include <expmap/Geodesic_polar_coordinates.h>
@@ -105,10 +106,9 @@ void run_accuracy(const Settings& settings) {
   // known: a geodesic from the apex is a meridian.
   double bump_ode_distance = 0, bump_ode_angle = 0;
   for (const auto& g : bump_samples) {
-    bump_ode_distance = std::max(
-        bump_ode_distance,
-        std::abs(expmap::gaussian_bump_meridian_length(std::hypot(g.x, g.y), bump_amplitude,
-                                                       bump_sigma) - g.s));
+    const double meridian = expmap_analytic::gaussian_bump_meridian_length(
+        std::hypot(g.x, g.y), bump_amplitude, bump_sigma);
+    bump_ode_distance = std::max(bump_ode_distance, std::abs(meridian - g.s));
     bump_ode_angle = std::max(bump_ode_angle, std::abs(wrap_angle(std::atan2(g.y, g.x) - g.theta)));
   }
   std::cout << "saddle geodesics: speed residual " << saddle_ode.speed_residual
@@ -119,9 +119,9 @@ void run_accuracy(const Settings& settings) {
 
   // gauss / saddle: height fields on a hexagonal lattice (equilateral in the
   // plane, valence 6, Delaunay with margin once lifted); gauss_grid /
-  // saddle_grid: the library's make_gaussian_bump / make_saddle (union-jack
-  // right triangles, whose diagonals are only just Delaunay in the plane and
-  // turn non-Delaunay wherever the surface bends).
+  // saddle_grid: the test geometry's make_gaussian_bump / make_saddle
+  // (union-jack right triangles, whose diagonals are only just Delaunay in
+  // the plane and turn non-Delaunay wherever the surface bends).
   // *_irregular: the same surfaces with jittered vertices, Delaunay
   // triangulated (irregular, isotropic on average, still Delaunay).
   const std::vector<std::string> surface_list = {"sphere", "gauss", "saddle",
@@ -138,7 +138,7 @@ void run_accuracy(const Settings& settings) {
     };
     for (const auto& [column, target] : columns) {
       // The mesh at this resolution.
-      expmap::Triangle_soup soup;
+      expmap_analytic::Triangle_soup soup;
       std::string parameter;
       std::size_t origin = 0;  // the source of the height fields
       if (is_sphere) {
@@ -147,19 +147,20 @@ void run_accuracy(const Settings& settings) {
         parameter = "frequency " + std::to_string(k) + (irregular ? ", jittered, convex hull" : "");
       } else if (union_jack) {
         auto make = [&](int n) {
-          return is_gauss ? expmap::make_gaussian_bump(n, half_width, bump_amplitude, bump_sigma)
-                          : expmap::make_saddle(n, half_width, saddle_amplitude);
+          return is_gauss
+                     ? expmap_analytic::make_gaussian_bump(n, half_width, bump_amplitude, bump_sigma)
+                     : expmap_analytic::make_saddle(n, half_width, saddle_amplitude);
         };
         const int n = closest_resolution(target, 16, 2, make);
         soup = make(n);
-        origin = expmap::grid_origin_vertex(n, n);
+        origin = expmap_analytic::grid_origin_vertex(n, n);
         parameter = std::to_string(n) + "x" + std::to_string(n) + " cells";
       } else {
         // Hexagon of inradius >= half_width; edge tuned so the lifted mean
         // edge length hits the target.
         auto make = [&](double edge) {
           const int rings = static_cast<int>(std::ceil(half_width / (edge * std::sqrt(3.0) / 2)));
-          expmap::Triangle_soup hex = expmap::make_equilateral_grid(rings, edge);
+          expmap_analytic::Triangle_soup hex = expmap_analytic::make_equilateral_grid(rings, edge);
           for (auto& p : hex.points) p[2] = height(p[0], p[1]);
           return hex;
         };
@@ -199,7 +200,7 @@ void run_accuracy(const Settings& settings) {
           const Vec3& n = soup.points[s];
           const Vec3 e1 = std::abs(n[2]) < 0.9 ? Vec3{{-n[1], n[0], 0.0}} : Vec3{{1.0, 0.0, 0.0}};
           references.push_back(vertex_references(soup, s, radius, [&](const Vec3& q) {
-            return expmap::sphere_exponential_map(soup.points[s], q, 1.0, e1);
+            return expmap_analytic::sphere_exponential_map(soup.points[s], q, 1.0, e1);
           }));
         }
       } else {
@@ -209,7 +210,8 @@ void run_accuracy(const Settings& settings) {
         const Xy_locator locator(soup);
         if (is_gauss) {
           ref = vertex_references(soup, s, radius, [&](const Vec3& q) {
-            return expmap::gaussian_bump_exponential_map(q, bump_amplitude, bump_sigma, {{1, 0, 0}});
+            return expmap_analytic::gaussian_bump_exponential_map(q, bump_amplitude, bump_sigma,
+                                                                  {{1, 0, 0}});
           });
           bump_ode_points = sample_references(locator, bump_samples);
         } else {
@@ -406,10 +408,10 @@ void run_accuracy(const Settings& settings) {
      << "* **Height-field meshes.** The paper restricts its accuracy study to Delaunay meshes. The main\n"
      << "  tables lift a hexagonal lattice (equilateral triangles in the plane, valence 6; the hexagon's\n"
      << "  inradius is 1.6) onto the height fields: its opposite angles sum to about 120 degrees, so it stays\n"
-     << "  Delaunay when lifted. The library's `make_gaussian_bump` / `make_saddle` (union-jack grid of right\n"
-     << "  triangles over [-1.6, 1.6]^2) are measured too, in a separate table: their diagonals are exactly\n"
-     << "  on the Delaunay limit in the plane and become non-Delaunay where the surface bends (row\n"
-     << "  `non-Delaunay edges`).\n"
+     << "  Delaunay when lifted. The test geometry's `make_gaussian_bump` / `make_saddle` (union-jack\n"
+     << "  grid of right triangles over [-1.6, 1.6]^2) are measured too, in a separate table: their\n"
+     << "  diagonals are exactly on the Delaunay limit in the plane and become non-Delaunay where the\n"
+     << "  surface bends (row `non-Delaunay edges`).\n"
      << "* **Irregular meshes.** The same three surfaces with jittered vertices, Delaunay triangulated\n"
      << "  (section below), to show how much the methods depend on a regular triangulation.\n"
      << "* **Errors**: E_d = mean |r - r_exact| (absolute, unit-size surfaces), E_a = mean |theta -\n"
@@ -451,7 +453,7 @@ void run_accuracy(const Settings& settings) {
       md << ' ' << fixed(paper_distance.at("heat")[paper_index(s, l)] / std::stod(l), 3) << " |";
   md << "\n";
 
-  md << "\n## Union-jack height fields (the library's make_gaussian_bump / make_saddle)\n\n";
+  md << "\n## Union-jack height fields (the test geometry's make_gaussian_bump / make_saddle)\n\n";
   table(md, {"gauss_grid", "saddle_grid"}, false);
   md << "| non-Delaunay edges (hexagonal lattice for comparison) |";
   for (const auto& s : {"gauss_grid", "saddle_grid"})

@@ -6,6 +6,8 @@
 // errors of every method against the exact map of the plane, and a picture
 // of the heat map on the three grids.
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "Common.h"
 #include "Figures.h"
 #include "Formatting.h"
@@ -15,7 +17,6 @@
 #include "Statistics.h"
 #include "Studies.h"
 
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Exact_exponential_map.h>
 #include <expmap/Geodesic_polar_coordinates.h>
@@ -48,12 +49,12 @@ void run_mesh_quality(const Settings& settings) {
 
   struct Case {
     std::string key, label;
-    expmap::Triangle_soup soup;
+    expmap_analytic::Triangle_soup soup;
     std::string note;
   };
   std::vector<Case> cases;
   {
-    Case regular{"regular", "regular", expmap::make_equilateral_grid(rings, edge), ""};
+    Case regular{"regular", "regular", expmap_analytic::make_equilateral_grid(rings, edge), ""};
     Case flipped{"flipped", "~50% edges flipped", regular.soup, ""};
     // Interior edges of the regular grid.
     std::size_t directed = 0, boundary = 0;
@@ -67,12 +68,12 @@ void run_mesh_quality(const Settings& settings) {
       for (const auto& [e, c] : count) boundary += c == 1;
     }
     const std::size_t interior = (directed - boundary) / 2;
-    const std::size_t n_flipped = expmap::flip_random_edges(flipped.soup, 0.5, 1);
+    const std::size_t n_flipped = expmap_analytic::flip_random_edges(flipped.soup, 0.5, 1);
     flipped.note = std::to_string(n_flipped) + " of " + std::to_string(interior) +
                    " interior edges flipped (" + percent(double(n_flipped) / double(interior)) +
                    "; flip_random_edges(0.5, seed 1) saturates there)";
     Case aniso{"anisotropic", "anisotropic (x*sqrt3, y/sqrt3)", regular.soup, ""};
-    expmap::scale_anisotropically(aniso.soup, stretch, 1 / stretch, 1.0);
+    expmap_analytic::scale_anisotropically(aniso.soup, stretch, 1 / stretch, 1.0);
     aniso.note = "regular grid scaled by (sqrt 3, 1/sqrt 3): aspect ratio 3, 120-degree angles";
     regular.note = "equilateral triangles, valence 6";
     cases.push_back(std::move(regular));
@@ -127,9 +128,10 @@ void run_mesh_quality(const Settings& settings) {
       std::size_t failed = 0;
       std::string failure;
       for (std::size_t s : sources) {
-        const std::vector<Reference_point> ref = vertex_references(c.soup, s, radius, [&](const Vec3& q) {
-          return expmap::plane_exponential_map(c.soup.points[s], q, {{1, 0, 0}});
-        });
+        const std::vector<Reference_point> ref =
+            vertex_references(c.soup, s, radius, [&](const Vec3& q) {
+              return expmap_analytic::plane_exponential_map(c.soup.points[s], q, {{1, 0, 0}});
+            });
         const auto start = std::chrono::steady_clock::now();
         Map map;
         try {

@@ -30,7 +30,7 @@ enum class Angle_estimator {
   /// piecewise linear gradient: exact for quadratics, so an irregular
   /// one-ring does not bias the direction. Up to 1.9x smaller angle errors
   /// on jittered Delaunay height fields and 2.7x on a jittered sphere, but
-  /// more fold-overs on real meshes (doc/manual.md, section 2). Falls back to `log_heat_gradient` at
+  /// more fold-overs on real meshes (doc/decisions.md). Falls back to `log_heat_gradient` at
   /// sources with fewer than five neighbours.
   log_heat_quadratic_fit,
   /// The gradient of a least-squares quadratic fitted to the heat itself

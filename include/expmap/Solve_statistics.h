@@ -25,6 +25,10 @@ struct Solve_statistics {
   /// than the safety margin to the region's edge (manual, section 2,
   /// step 5); each retry repeats the distance step on the larger region.
   std::size_t region_retries = 0;
+  /// Times a heat query grew its breadth-first candidates where the region
+  /// touched their edge (manual, section 2, step 2; only where the heat
+  /// matrix is not an M-matrix).
+  std::size_t candidate_widenings = 0;
 
   /// Adds the work of another solve (all fields).
   Solve_statistics& operator+=(const Solve_statistics& other) {
@@ -33,6 +37,7 @@ struct Solve_statistics {
     factor_entries += other.factor_entries;
     solve_seconds += other.solve_seconds;
     region_retries += other.region_retries;
+    candidate_widenings += other.candidate_widenings;
     return *this;
   }
 };

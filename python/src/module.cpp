@@ -168,10 +168,11 @@ expmap::Patch mesh_patch(const Bound_method<Method>& b, std::size_t source,
   return expmap::Patch::vertex_set(std::move(vertices));
 }
 
-/// The query options from `reference`: None or 3 numbers (the library
-/// checks that they are finite and not along the normal).
-expmap::Query_options query_argument(py::handle reference) {
+/// The query options from `reference` (None or 3 numbers; the library
+/// checks that they are finite and not along the normal) and `trim_folds`.
+expmap::Query_options query_argument(py::handle reference, bool trim_folds) {
   expmap::Query_options query;
+  query.trim_folds = trim_folds;
   if (reference.is_none()) return query;
   py::array array = py::array::ensure(reference);
   if (!array || array.ndim() != 1 || array.shape(0) != 3 ||
@@ -248,7 +249,9 @@ const char* const patch_doc =
     "``vertices`` (the k nearest vertices) or ``vertex_set`` (these vertex\n"
     "indices). ``reference`` is the direction of angle 0 (3 floats), projected\n"
     "onto the source's tangent plane; default: the x axis, or the y axis where\n"
-    "the normal is within 30 degrees of x.\n";
+    "the normal is within 30 degrees of x. ``trim_folds=True`` cuts each map to\n"
+    "its fold-free disk: only the vertices nearer than ``fold_free_radius``\n"
+    "(the source always) stay, so no triangle of the result is flipped.\n";
 
 /// compute(), compute_many() and the shared properties of every method class.
 template <class Method>
@@ -258,11 +261,11 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute",
       [](const Bound& b, py::handle source, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference) {
+         py::handle reference, bool trim_folds) {
         const std::size_t s = source_argument(b, source);
         const expmap::Patch patch =
             mesh_patch(b, s, patch_argument(b, radius, fraction, vertices, vertex_set));
-        const expmap::Query_options query = query_argument(reference);
+        const expmap::Query_options query = query_argument(reference, trim_folds);
         Map map;
         {
           py::gil_scoped_release release;
@@ -273,8 +276,9 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       py::arg("source"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
       py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
+      py::arg("trim_folds") = false,
       (std::string("compute(source, *, radius=None, fraction=None, vertices=None, "
-                   "vertex_set=None, reference=None) -> LocalMap\n\n"
+                   "vertex_set=None, reference=None, trim_folds=False) -> LocalMap\n\n"
                    "Geodesic polar coordinates around vertex ``source`` (0-based row of\n"
                    "the vertex array). ") +
        patch_doc +
@@ -287,11 +291,11 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference, py::handle threads_object) {
+         py::handle reference, py::handle threads_object, bool trim_folds) {
         const Index_array checked = checked_indices(sources_object, "sources", b.rows);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
-        const expmap::Query_options query = query_argument(reference);
+        const expmap::Query_options query = query_argument(reference, trim_folds);
         const std::size_t threads = index_argument(threads_object, "threads");
         if (threads > 4096)
           throw expmap::Invalid_input("threads must be at most 4096 (got " +
@@ -314,9 +318,10 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       py::arg("sources"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
       py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
-      py::arg("threads") = 0,
+      py::arg("threads") = 0, py::arg("trim_folds") = false,
       (std::string("compute_many(sources, *, radius=None, fraction=None, vertices=None, "
-                   "vertex_set=None, reference=None, threads=0) -> BatchMaps\n\n"
+                   "vertex_set=None, reference=None, threads=0, trim_folds=False)\n"
+                   "    -> BatchMaps\n\n"
                    "One map per source (a 1-D integer array), computed on ``threads``\n"
                    "threads (0: one per core) without holding the GIL. ") +
        patch_doc +
@@ -369,7 +374,7 @@ void bind_heat(py::module_& m) {
       "    local = heat.compute(0, fraction=0.05)\n"
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
-                    std::optional<double> distance_time_factor, py::handle laplacian,
+                    py::handle laplacian,
                     py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double region_growth,
                     double pruning_tolerance, double poisson_compression_tolerance,
@@ -377,7 +382,6 @@ void bind_heat(py::module_& m) {
                     int query_threads) {
           expmap::Heat_options options;
           options.time_factor = time_factor;
-          options.distance_time_factor = distance_time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
           options.vertex_area = enum_argument<expmap::Vertex_area>(vertex_area, "vertex_area");
           options.factor_precision =
@@ -397,7 +401,6 @@ void bind_heat(py::module_& m) {
         }),
         py::arg("vertices"), py::arg("faces"), py::kw_only(),
         py::arg("time_factor") = defaults.time_factor,
-        py::arg("distance_time_factor") = defaults.distance_time_factor,
         py::arg("laplacian") = defaults.laplacian,
         py::arg("vertex_area") = defaults.vertex_area,
         py::arg("factor_precision") = defaults.factor_precision,
@@ -414,8 +417,6 @@ void bind_heat(py::module_& m) {
         "DiscreteExponentialMap).\n\n"
         "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
         "    larger is smoother.\n"
-        "distance_time_factor: time factor of the heat the distance comes from,\n"
-        "    when it should differ (one more factorization); None: time_factor.\n"
         "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
         "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
         "    heat step's mass matrix.\n"
@@ -449,10 +450,7 @@ void bind_heat(py::module_& m) {
   add_queries(c);
   c.def_property_readonly(
       "time_step", [](const Bound& b) { return b.method->time_step(); },
-      "Diffusion time t of the heat the angles come from.");
-  c.def_property_readonly(
-      "distance_time_step", [](const Bound& b) { return b.method->distance_time_step(); },
-      "Diffusion time of the heat the distance comes from.");
+      "Diffusion time t = time_factor * h^2.");
   c.def_property_readonly(
       "mean_edge_length", [](const Bound& b) { return b.method->mean_edge_length(); },
       "Mean edge length h of the mesh.");
@@ -549,6 +547,10 @@ PYBIND11_MODULE(_expmap, m) {
       .def_readonly("normal", &Map_arrays::normal, "Unit normal of the tangent plane.")
       .def_readonly("axis_u", &Map_arrays::axis_u, "Tangent axis of angle 0.")
       .def_readonly("axis_v", &Map_arrays::axis_v, "Tangent axis of angle pi/2.")
+      .def_readonly("fold_free_radius", &Map_arrays::fold_free_radius,
+                    "Where the map is one-to-one: the largest r such that no triangle with\n"
+                    "all corners nearer than r is flipped or collapsed in uv; max(r) if\n"
+                    "none is flipped.")
       .def_property_readonly(
           "statistics",
           [](const Map_arrays& a) {
@@ -606,11 +608,14 @@ PYBIND11_MODULE(_expmap, m) {
       .def_readonly("theta", &Batch_arrays::theta, "Polar angle of each row.")
       .def_readonly("u", &Batch_arrays::u, "r cos theta of each row.")
       .def_readonly("v", &Batch_arrays::v, "r sin theta of each row.")
+      .def_readonly("fold_free_radius", &Batch_arrays::fold_free_radius,
+                    "Per source: its map's fold-free radius (LocalMap.fold_free_radius;\n"
+                    "NaN where the query failed).")
       .def_readonly("errors", &Batch_arrays::errors, "Per source: '' or why its query failed.")
       .def_property_readonly("failures", &Batch_arrays::failures, "How many queries failed.")
       .def("as_dict", &Batch_arrays::as_dict,
-           "The seven arrays by name (sources, offsets, vertex, r, theta, u, v), as\n"
-           "numpy.savez takes them.")
+           "The eight arrays by name (sources, offsets, vertex, r, theta, u, v,\n"
+           "fold_free_radius), as numpy.savez takes them.")
       .def("__len__", [](const Batch_arrays& b) { return b.errors.size(); })
       .def(
           "__getitem__",

@@ -3,7 +3,6 @@
 #ifndef EXPMAP_TEST_BASELINE_FIXTURES_H
 #define EXPMAP_TEST_BASELINE_FIXTURES_H
 
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Local_map.h>
 
 #include <boost/test/unit_test.hpp>
@@ -15,6 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 namespace expmap_test {
@@ -26,16 +27,16 @@ inline double angle_difference(double a, double b) {
 
 /// A planar grid of 2 x 2 with n x n cells; `flipped`: half of its
 /// flippable edges flipped (the paper's irregular mesh of figure 13).
-inline expmap::Triangle_soup planar_grid(int n, bool flipped) {
-  expmap::Triangle_soup soup = expmap::make_grid(n, n, 2.0, 2.0);
-  if (flipped) expmap::flip_random_edges(soup, 0.5, 7);
+inline expmap_analytic::Triangle_soup planar_grid(int n, bool flipped) {
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(n, n, 2.0, 2.0);
+  if (flipped) expmap_analytic::flip_random_edges(soup, 0.5, 7);
   return soup;
 }
 
 template <class Mesh>
-Mesh to_mesh(const expmap::Triangle_soup& soup) {
+Mesh to_mesh(const expmap_analytic::Triangle_soup& soup) {
   Mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   return mesh;
 }
 
@@ -46,12 +47,12 @@ struct Planar_errors {
 };
 
 template <class Map>
-Planar_errors planar_errors(const Map& map, const expmap::Triangle_soup& soup) {
+Planar_errors planar_errors(const Map& map, const expmap_analytic::Triangle_soup& soup) {
   Planar_errors e;
   const auto& source = soup.points[map.indices[0]];
   for (std::size_t i = 1; i < map.size(); ++i) {
-    const expmap::Polar exact =
-        expmap::plane_exponential_map(source, soup.points[map.indices[i]], map.axis_u);
+    const expmap_analytic::Polar exact =
+        expmap_analytic::plane_exponential_map(source, soup.points[map.indices[i]], map.axis_u);
     e.distance = std::max(e.distance, std::abs(map.distance[i] - exact.r) / exact.r);
     e.angle = std::max(e.angle, angle_difference(map.angle[i], exact.theta_unrotated));
   }
@@ -59,7 +60,7 @@ Planar_errors planar_errors(const Map& map, const expmap::Triangle_soup& soup) {
 }
 
 /// Vertices with both coordinates in [-limit, limit], picked at random.
-inline std::vector<std::size_t> random_vertices_inside(const expmap::Triangle_soup& soup,
+inline std::vector<std::size_t> random_vertices_inside(const expmap_analytic::Triangle_soup& soup,
                                                        double limit, std::size_t count,
                                                        unsigned seed) {
   std::mt19937 rng(seed);
@@ -83,14 +84,14 @@ struct Sphere_errors {
 };
 
 template <class Map>
-Sphere_errors sphere_errors(const Map& map, const expmap::Triangle_soup& soup) {
+Sphere_errors sphere_errors(const Map& map, const expmap_analytic::Triangle_soup& soup) {
   Sphere_errors e;
   const auto& source = soup.points[map.indices[0]];
   std::vector<double> differences;
   double c = 0, s = 0;
   for (std::size_t i = 1; i < map.size(); ++i) {
-    const expmap::Polar exact =
-        expmap::sphere_exponential_map(source, soup.points[map.indices[i]], 1.0, map.axis_u);
+    const expmap_analytic::Polar exact = expmap_analytic::sphere_exponential_map(
+        source, soup.points[map.indices[i]], 1.0, map.axis_u);
     e.distance += std::abs(map.distance[i] - exact.r);
     const double d = std::remainder(map.angle[i] - exact.theta_unrotated, 2 * M_PI);
     differences.push_back(d);
@@ -117,9 +118,9 @@ inline std::vector<std::size_t> random_sources(std::size_t n, std::size_t count,
   return sources;
 }
 
-inline const expmap::Triangle_soup& icosphere(int subdivisions) {
-  static const expmap::Triangle_soup level5 = expmap::make_icosphere(5, 1.0);
-  static const expmap::Triangle_soup level6 = expmap::make_icosphere(6, 1.0);
+inline const expmap_analytic::Triangle_soup& icosphere(int subdivisions) {
+  static const expmap_analytic::Triangle_soup level5 = expmap_analytic::make_icosphere(5, 1.0);
+  static const expmap_analytic::Triangle_soup level6 = expmap_analytic::make_icosphere(6, 1.0);
   return subdivisions == 5 ? level5 : level6;
 }
 
@@ -157,13 +158,13 @@ template <template <class> class Method>
 void check_exact_on_planar_grids(double distance_tolerance, double angle_tolerance) {
   const double radius = 0.61;  // no grid distance ties with it
   for (bool flipped : {false, true}) {
-    expmap::Triangle_soup soup = expmap::make_grid(40, 40, 2.0, 2.0);
-    if (flipped) BOOST_TEST_REQUIRE(expmap::flip_random_edges(soup, 0.5, 7) > 500u);
+    expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(40, 40, 2.0, 2.0);
+    if (flipped) BOOST_TEST_REQUIRE(expmap_analytic::flip_random_edges(soup, 0.5, 7) > 500u);
     const auto mesh = to_mesh<Surface_mesh>(soup);
     const Method<Surface_mesh> method(mesh);
     std::vector<std::size_t> sources = random_vertices_inside(soup, 0.35, 4, 11);
-    sources.push_back(expmap::grid_vertex_index(40, 20, 0));  // boundary, straight angle
-    sources.push_back(expmap::grid_vertex_index(40, 0, 40));  // corner, right angle
+    sources.push_back(expmap_analytic::grid_vertex_index(40, 20, 0));  // boundary, straight angle
+    sources.push_back(expmap_analytic::grid_vertex_index(40, 0, 40));  // corner, right angle
     for (std::size_t s : sources) {
       for (bool turned : {false, true}) {
         expmap::Query_options query;
@@ -193,7 +194,7 @@ void check_exact_on_planar_grids(double distance_tolerance, double angle_toleran
 /// first path segment.
 template <template <class> class Method>
 void check_cone_from_apex(double distance_tolerance, double angle_tolerance) {
-  const expmap::Triangle_soup soup = expmap::make_cone(32, 20, M_PI / 3, 1.0);
+  const expmap_analytic::Triangle_soup soup = expmap_analytic::make_cone(32, 20, M_PI / 3, 1.0);
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Method<Surface_mesh> method(mesh);
   const auto map = method.compute_by_index(0, expmap::Patch::geodesic_radius(0.93));
@@ -220,7 +221,7 @@ void check_cone_from_apex(double distance_tolerance, double angle_tolerance) {
 /// vertices, radius 0.5, seeded random sources) stay below the bounds.
 template <template <class> class Method>
 void check_sphere_accuracy(const char* name, double distance_bound, double angle_bound) {
-  const expmap::Triangle_soup& soup = icosphere(5);
+  const expmap_analytic::Triangle_soup& soup = icosphere(5);
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Method<Surface_mesh> method(mesh);
   for (std::size_t s : random_sources(soup.number_of_vertices(), 5, 2018)) {
@@ -242,10 +243,10 @@ void check_sphere_accuracy(const char* name, double distance_bound, double angle
 /// for every kind of patch, on a closed mesh and on one with boundary.
 template <template <class> class Method>
 void check_same_on_all_representations() {
-  expmap::Triangle_soup grid = expmap::make_grid(24, 24, 2.0, 2.0);
-  expmap::flip_random_edges(grid, 0.5, 3);
-  const expmap::Triangle_soup* meshes[] = {&icosphere(5), &grid};
-  for (const expmap::Triangle_soup* soup : meshes) {
+  expmap_analytic::Triangle_soup grid = expmap_analytic::make_grid(24, 24, 2.0, 2.0);
+  expmap_analytic::flip_random_edges(grid, 0.5, 3);
+  const expmap_analytic::Triangle_soup* meshes[] = {&icosphere(5), &grid};
+  for (const expmap_analytic::Triangle_soup* soup : meshes) {
     const auto surface_mesh = to_mesh<Surface_mesh>(*soup);
     const auto polyhedron = to_mesh<Polyhedron>(*soup);
     const Method<Surface_mesh> a(surface_mesh);
@@ -270,7 +271,7 @@ void check_same_on_all_representations() {
 /// the whole component for fraction 1; angles in (-pi, pi].
 template <template <class> class Method>
 void check_patch_kinds(bool nearest_by_reported_distance) {
-  const expmap::Triangle_soup& soup = icosphere(5);
+  const expmap_analytic::Triangle_soup& soup = icosphere(5);
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Method<Surface_mesh> method(mesh);
   const std::size_t s = 1234, n = soup.number_of_vertices();
@@ -327,7 +328,7 @@ void check_patch_kinds(bool nearest_by_reported_distance) {
                  std::abs(cross_z - m.normal[2]) <
              1e-12);
 
-  expmap::Triangle_soup small = expmap::make_icosphere(2, 1.0);
+  expmap_analytic::Triangle_soup small = expmap_analytic::make_icosphere(2, 1.0);
   const auto small_mesh = to_mesh<Surface_mesh>(small);
   const Method<Surface_mesh> whole(small_mesh);
   BOOST_TEST(whole.compute_by_index(3, expmap::Patch::fraction(1.0)).size() ==
@@ -337,7 +338,7 @@ void check_patch_kinds(bool nearest_by_reported_distance) {
 /// Bad queries throw Invalid_input naming the vertex.
 template <template <class> class Method>
 void check_bad_input() {
-  expmap::Triangle_soup soup = expmap::make_grid(4, 4, 1.0, 1.0);
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(4, 4, 1.0, 1.0);
   auto mesh = to_mesh<Surface_mesh>(soup);
   const auto isolated = mesh.add_vertex(Point(5, 5, 5));
   const Method<Surface_mesh> method(mesh);
@@ -374,7 +375,7 @@ void check_bad_input() {
 /// Concurrent queries on one object give the results of sequential ones.
 template <template <class> class Method>
 void check_concurrent_queries() {
-  const expmap::Triangle_soup& soup = icosphere(5);
+  const expmap_analytic::Triangle_soup& soup = icosphere(5);
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Method<Surface_mesh> method(mesh);
   const auto sources = random_sources(soup.number_of_vertices(), 8, 5);

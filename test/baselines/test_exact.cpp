@@ -29,7 +29,8 @@ BOOST_AUTO_TEST_CASE(exact_on_planar_grids) { check_exact_on_planar_grids<Exact>
 BOOST_AUTO_TEST_CASE(unrolled_cylinder_distances) {
   const int around = 48, along = 40;
   const double length = 4.0, radius = 1.0;
-  const expmap::Triangle_soup soup = expmap::make_cylinder(around, along, radius, length);
+  const expmap_analytic::Triangle_soup soup =
+      expmap_analytic::make_cylinder(around, along, radius, length);
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Exact<Surface_mesh> exact(mesh);
   const double chord = 2 * radius * std::sin(M_PI / around);

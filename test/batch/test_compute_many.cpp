@@ -1,6 +1,5 @@
 // compute_many: the same maps as one compute() per source, in source order,
 // on one thread or several, with failures kept to their own source.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
 #include <expmap/Exact_exponential_map.h>
@@ -14,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_SUITE(compute_many)
 // region), so the counts tell which ran; the maps are the same either way.
 BOOST_AUTO_TEST_CASE(a_parallel_batch_runs_each_heat_query_on_one_thread) {
   Mesh sphere;
-  expmap::soup_to_mesh(expmap::make_icosphere(5), sphere);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(5), sphere);
   expmap::Heat_options two_threads;
   two_threads.query_threads = 2;
   const expmap::Heat_exponential_map<Mesh> one(sphere), two(sphere, two_threads);

@@ -5,7 +5,6 @@
 // estimators linear in the heat solve two columns instead of one per star
 // vertex: checked against whole-mesh solves of every star column. The
 // near-source blend keeps the largest error next to the source small.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/internal/Indexed_mesh.h>
@@ -27,6 +26,8 @@
 #include <map>
 #include <random>
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -37,8 +38,8 @@ namespace {
 // mean edge length, in the tangent plane of the surface (`normal(p)`),
 // keeping the connectivity: irregular one-rings, valid triangles.
 template <class Normal, class Project>
-void jitter_vertices(expmap::Triangle_soup& soup, double jitter, unsigned seed, Normal normal,
-                     Project project) {
+void jitter_vertices(expmap_analytic::Triangle_soup& soup, double jitter, unsigned seed,
+                     Normal normal, Project project) {
   double total = 0;
   std::size_t edges = 0;
   for (const auto& t : soup.triangles)
@@ -76,10 +77,10 @@ struct Sphere_angle_errors {
 
 // Angle errors (up to a rotation) of heat maps of radius 0.5 on the unit
 // sphere against the analytic map, over a few sources.
-Sphere_angle_errors sphere_angle_errors(const expmap::Triangle_soup& soup,
+Sphere_angle_errors sphere_angle_errors(const expmap_analytic::Triangle_soup& soup,
                                         const expmap::Heat_options& options) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
   std::vector<double> errors;
   Sphere_angle_errors result;
@@ -88,8 +89,8 @@ Sphere_angle_errors sphere_angle_errors(const expmap::Triangle_soup& soup,
     std::vector<double> computed, exact;
     for (std::size_t i = 1; i < map.size(); ++i) {
       computed.push_back(map.angle[i]);
-      exact.push_back(expmap::sphere_exponential_map(soup.points[s], soup.points[map.indices[i]],
-                                                     1.0, map.axis_u)
+      exact.push_back(expmap_analytic::sphere_exponential_map(
+                          soup.points[s], soup.points[map.indices[i]], 1.0, map.axis_u)
                           .theta_unrotated);
     }
     errors.push_back(mean_angle_error_up_to_rotation(computed, exact));
@@ -116,7 +117,8 @@ Sphere_angle_errors sphere_angle_errors(const expmap::Triangle_soup& soup,
   return result;
 }
 
-double sphere_angle_error(const expmap::Triangle_soup& soup, expmap::Angle_estimator estimator) {
+double sphere_angle_error(const expmap_analytic::Triangle_soup& soup,
+                          expmap::Angle_estimator estimator) {
   expmap::Heat_options options;
   options.angle_estimator = estimator;
   options.near_source_blend = {0, 0};  // the estimators alone
@@ -125,8 +127,8 @@ double sphere_angle_error(const expmap::Triangle_soup& soup, expmap::Angle_estim
 
 // A hexagonal patch of the plane z = 0 (edge 0.1) with its vertices moved
 // in the plane by up to `jitter` edges.
-expmap::Triangle_soup jittered_plane(int rings, double jitter, unsigned seed) {
-  expmap::Triangle_soup soup = expmap::make_equilateral_grid(rings, 0.1);
+expmap_analytic::Triangle_soup jittered_plane(int rings, double jitter, unsigned seed) {
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_equilateral_grid(rings, 0.1);
   jitter_vertices(
       soup, jitter, seed, [](const auto&) { return std::array<double, 3>{{0, 0, 1}}; },
       [](auto&) {});
@@ -136,8 +138,8 @@ expmap::Triangle_soup jittered_plane(int rings, double jitter, unsigned seed) {
 // |theta - exact| at patch entry i of a map of a planar soup: the exact
 // angle is the polar angle in the map's own axes.
 template <class Map>
-double plane_angle_error(const expmap::Triangle_soup& soup, std::size_t source, const Map& map,
-                         std::size_t i) {
+double plane_angle_error(const expmap_analytic::Triangle_soup& soup, std::size_t source,
+                         const Map& map, std::size_t i) {
   const auto& p = soup.points[map.indices[i]];
   const auto& o = soup.points[source];
   const double x = (p[0] - o[0]) * map.axis_u[0] + (p[1] - o[1]) * map.axis_u[1];
@@ -145,8 +147,8 @@ double plane_angle_error(const expmap::Triangle_soup& soup, std::size_t source, 
   return std::abs(std::remainder(map.angle[i] - std::atan2(y, x), 2 * M_PI));
 }
 
-expmap::Triangle_soup jittered_unit_sphere(int subdivisions) {
-  expmap::Triangle_soup soup = expmap::make_icosphere(subdivisions, 1.0);
+expmap_analytic::Triangle_soup jittered_unit_sphere(int subdivisions) {
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_icosphere(subdivisions, 1.0);
   jitter_vertices(
       soup, 0.35, 1, [](const auto& p) { return p; },
       [](auto& p) {
@@ -157,9 +159,9 @@ expmap::Triangle_soup jittered_unit_sphere(int subdivisions) {
 }
 
 // The index arrays the library's internals work on, for a soup.
-expmap::internal::Mesh_arrays mesh_arrays_of(const expmap::Triangle_soup& soup) {
+expmap::internal::Mesh_arrays mesh_arrays_of(const expmap_analytic::Triangle_soup& soup) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   return expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default>(mesh,
                                                                      get(CGAL::vertex_point, mesh))
       .arrays;
@@ -199,7 +201,7 @@ double angle_between(const std::array<double, 2>& a, const std::array<double, 2>
 BOOST_AUTO_TEST_SUITE(angle_estimators)
 
 BOOST_AUTO_TEST_CASE(quadratic_fit_is_exact_for_quadratics_on_an_irregular_star) {
-  expmap::Triangle_soup soup = expmap::make_equilateral_grid(4, 0.1);
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_equilateral_grid(4, 0.1);
   jitter_vertices(
       soup, 0.3, 5, [](const auto&) { return std::array<double, 3>{{0, 0, 1}}; },
       [](auto&) {});
@@ -238,7 +240,7 @@ BOOST_AUTO_TEST_CASE(quadratic_fit_is_exact_for_quadratics_on_an_irregular_star)
 // quadratics and let less of a function's quartic part leak into the
 // gradient than the unweighted fit on the same irregular two-ring.
 BOOST_AUTO_TEST_CASE(weighted_quadratic_fit_leaks_less_of_higher_terms) {
-  const expmap::Triangle_soup soup = jittered_plane(6, 0.3, 7);
+  const expmap_analytic::Triangle_soup soup = jittered_plane(6, 0.3, 7);
   const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
   const int s = 0;
   const auto frame = expmap::internal::tangent_frame(arrays, s, std::nullopt);
@@ -277,8 +279,9 @@ BOOST_AUTO_TEST_CASE(weighted_quadratic_fit_leaks_less_of_higher_terms) {
 }
 
 BOOST_AUTO_TEST_CASE(quadratic_fit_reduces_angle_error_on_irregular_one_rings) {
-  const expmap::Triangle_soup regular = expmap::make_icosphere(5, 1.0);  // 10,242 vertices
-  const expmap::Triangle_soup irregular = jittered_unit_sphere(5);
+  const expmap_analytic::Triangle_soup regular =
+      expmap_analytic::make_icosphere(5, 1.0);  // 10,242 vertices
+  const expmap_analytic::Triangle_soup irregular = jittered_unit_sphere(5);
   using E = expmap::Angle_estimator;
   const double regular_linear = sphere_angle_error(regular, E::log_heat_gradient);
   const double regular_fit = sphere_angle_error(regular, E::log_heat_quadratic_fit);
@@ -296,9 +299,9 @@ BOOST_AUTO_TEST_CASE(quadratic_fit_reduces_angle_error_on_irregular_one_rings) {
 // from v on the star: compared here with whole-mesh solves of every star
 // column (an independent Eigen factorization of the same matrix).
 BOOST_AUTO_TEST_CASE(two_column_estimators_equal_the_gradient_of_every_star_column) {
-  const expmap::Triangle_soup soup = jittered_unit_sphere(3);  // 642 vertices
+  const expmap_analytic::Triangle_soup soup = jittered_unit_sphere(3);  // 642 vertices
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed(
       mesh, get(CGAL::vertex_point, mesh));
   const auto& m = indexed.arrays;
@@ -444,7 +447,7 @@ BOOST_AUTO_TEST_CASE(cubic_leak_removal_in_a_batch_equals_one_call_per_vertex) {
 // were chosen (doc/manual.md, section 2), and clearly below the log-heat
 // area-weighted estimator without the blend (the previous default).
 BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
-  const expmap::Triangle_soup irregular = jittered_unit_sphere(5);
+  const expmap_analytic::Triangle_soup irregular = jittered_unit_sphere(5);
   const Sphere_angle_errors defaults = sphere_angle_errors(irregular, expmap::Heat_options{});
   expmap::Heat_options previous;
   previous.angle_estimator = expmap::Angle_estimator::log_heat_gradient;
@@ -467,9 +470,9 @@ BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
 // (test/operators/test_vertex_area.cpp), and the heat carries that error
 // into the angles.
 BOOST_AUTO_TEST_CASE(mixed_voronoi_areas_give_better_angles_on_a_jittered_plane) {
-  const expmap::Triangle_soup soup = jittered_plane(60, 0.35, 5);
+  const expmap_analytic::Triangle_soup soup = jittered_plane(60, 0.35, 5);
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   auto mean_error = [&](expmap::Vertex_area area) {
     expmap::Heat_options options;
     options.vertex_area = area;
@@ -537,9 +540,9 @@ BOOST_AUTO_TEST_CASE(the_sources_neighbours_take_dgpcs_angles_and_their_edge_len
 // falls too fast across the two-ring for the linear one), and its angles
 // stay accurate there (mean angle error on the regular sphere at m = 1).
 BOOST_AUTO_TEST_CASE(small_time_factors_take_the_logarithmic_fit) {
-  const expmap::Triangle_soup regular = expmap::make_icosphere(5, 1.0);
+  const expmap_analytic::Triangle_soup regular = expmap_analytic::make_icosphere(5, 1.0);
   Surface_mesh mesh;
-  expmap::soup_to_mesh(regular, mesh);
+  expmap_analytic::soup_to_mesh(regular, mesh);
   expmap::Heat_options options;
   options.time_factor = 1;
   BOOST_TEST(to_string(expmap::Heat_exponential_map<Surface_mesh>(mesh, options).angle_estimator()) ==
@@ -557,7 +560,8 @@ BOOST_AUTO_TEST_CASE(small_time_factors_take_the_logarithmic_fit) {
 // near-source blend reaches: 1/R on spheres of radius R, 0 on a plane.
 BOOST_AUTO_TEST_CASE(normal_turn_rate_is_the_inverse_radius_on_spheres) {
   for (double radius : {0.5, 2.0, 10.0}) {
-    const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(expmap::make_icosphere(4, radius));
+    const expmap::internal::Mesh_arrays arrays =
+        mesh_arrays_of(expmap_analytic::make_icosphere(4, radius));
     for (int s : {0, 100, 2000}) {
       const auto normal = expmap::internal::vertex_normal(arrays, s);
       const double rate = expmap::internal::normal_turn_rate(arrays, s, normal);
@@ -569,7 +573,8 @@ BOOST_AUTO_TEST_CASE(normal_turn_rate_is_the_inverse_radius_on_spheres) {
       }
     }
   }
-  const expmap::internal::Mesh_arrays flat = mesh_arrays_of(expmap::make_equilateral_grid(4, 0.1));
+  const expmap::internal::Mesh_arrays flat =
+      mesh_arrays_of(expmap_analytic::make_equilateral_grid(4, 0.1));
   BOOST_TEST(expmap::internal::normal_turn_rate(flat, 0, {{0, 0, 1}}) < 1e-12);
 }
 
@@ -578,9 +583,9 @@ BOOST_AUTO_TEST_CASE(normal_turn_rate_is_the_inverse_radius_on_spheres) {
 // default blend's begin (2h) but inside the widened one (3h) take their
 // chord's direction, which is the exact polar angle there.
 BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
-  const expmap::Triangle_soup soup = jittered_plane(20, 0.3, 3);
+  const expmap_analytic::Triangle_soup soup = jittered_plane(20, 0.3, 3);
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   using Heat = expmap::Heat_exponential_map<Surface_mesh>;
   const Heat heat(mesh);
   const double h = heat.mean_edge_length();
@@ -616,9 +621,10 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
 // narrowed end and the nominal one (6h) then take the heat's own angles,
 // those of the pure heat map ({0, 0}); inside the narrowed blend they do not.
 BOOST_AUTO_TEST_CASE(the_near_source_blend_narrows_where_the_surface_bends) {
-  const expmap::Triangle_soup soup = expmap::make_icosphere(2, 1.0);  // 162 vertices
+  const expmap_analytic::Triangle_soup soup =
+      expmap_analytic::make_icosphere(2, 1.0);  // 162 vertices
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   using Heat = expmap::Heat_exponential_map<Surface_mesh>;
   const Heat blended(mesh);
   expmap::Heat_options pure_options;

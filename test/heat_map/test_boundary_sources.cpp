@@ -1,7 +1,6 @@
 // The heat map at and near a mesh boundary, against the exact map of the
 // plane: a source on the boundary sees the half-disk, not the boundary's
 // two tangent directions.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Fold_overs.h>
 #include <expmap/Heat_exponential_map.h>
 
@@ -10,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -21,30 +22,29 @@ struct Planar_errors {
   std::size_t flipped = 0, triangles = 0;
 };
 
-Planar_errors planar_errors(const expmap::Triangle_soup& soup, const Surface_mesh& mesh,
-                            const expmap::Heat_exponential_map<Surface_mesh>& heat,
-                            std::size_t s) {
+Planar_errors planar_errors(const expmap_analytic::Triangle_soup& soup, const Surface_mesh& mesh,
+                            const expmap::Heat_exponential_map<Surface_mesh>& heat, std::size_t s) {
   const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.4));
   std::vector<double> computed, exact;
   for (std::size_t i = 1; i < map.size(); ++i) {
     computed.push_back(map.angle[i]);
-    exact.push_back(expmap::plane_exponential_map(soup.points[s], soup.points[map.indices[i]],
-                                                  map.axis_u)
+    exact.push_back(expmap_analytic::plane_exponential_map(soup.points[s],
+                                                           soup.points[map.indices[i]], map.axis_u)
                         .theta_unrotated);
   }
   const auto folds = expmap::count_flipped_triangles(mesh, map);
   return {mean_angle_error_up_to_rotation(computed, exact), folds.flipped, folds.total};
 }
 
-void check_rows_from_the_edge(const expmap::Triangle_soup& soup, int nx, const char* name,
+void check_rows_from_the_edge(const expmap_analytic::Triangle_soup& soup, int nx, const char* name,
                               double angle_bound) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   // The middle of the bottom edge, then one, two and five rows in: the
   // boundary's mirror image pulls hardest at the edge and fades inwards.
   for (int row : {0, 1, 2, 5}) {
-    const std::size_t s = expmap::grid_vertex_index(nx, nx / 2, row);
+    const std::size_t s = expmap_analytic::grid_vertex_index(nx, nx / 2, row);
     const Planar_errors e = planar_errors(soup, mesh, heat, s);
     BOOST_TEST_MESSAGE(name << ", row " << row << ": mean angle error " << e.angle << ", "
                             << e.flipped << " of " << e.triangles << " triangles flipped");
@@ -68,12 +68,13 @@ BOOST_AUTO_TEST_SUITE(boundary_sources)
 // triangles flipped. Bounds are the measured errors (see the test log)
 // rounded up.
 BOOST_AUTO_TEST_CASE(a_planar_grid_is_mapped_onto_the_half_disk) {
-  check_rows_from_the_edge(expmap::make_grid(60, 60, 2.0, 2.0), 60, "union-jack grid", 0.01);
+  check_rows_from_the_edge(expmap_analytic::make_grid(60, 60, 2.0, 2.0), 60, "union-jack grid",
+                           0.01);
 }
 
 BOOST_AUTO_TEST_CASE(a_jittered_planar_grid_is_mapped_onto_the_half_disk) {
-  expmap::Triangle_soup soup = expmap::make_grid(60, 60, 2.0, 2.0);
-  expmap::flip_random_edges(soup, 0.3, 7);
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(60, 60, 2.0, 2.0);
+  expmap_analytic::flip_random_edges(soup, 0.3, 7);
   check_rows_from_the_edge(soup, 60, "union-jack grid with 30% of its edges flipped", 0.012);
 }
 

@@ -1,6 +1,5 @@
 // The same map whatever the mesh data structure or the solver model: the
 // package is generic over CGAL FaceGraphs and SparseCholeskySolver models.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Eigen_simplicial_solver.h>
 #include <expmap/Heat_exponential_map.h>
 
@@ -8,6 +7,7 @@
 
 #include <thread>
 
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -45,7 +45,7 @@ BOOST_AUTO_TEST_SUITE(generic_interfaces)
 
 BOOST_AUTO_TEST_CASE(a_solver_models_failure_is_a_computation_error_naming_the_system) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_icosphere(2, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(2, 1.0), mesh);
   Solver_failing_after_first_factor::factored = 0;
   try {
     expmap::Heat_exponential_map<Surface_mesh, CGAL::Default, Solver_failing_after_first_factor>

@@ -1,7 +1,6 @@
 // Accuracy of the heat exponential map against the analytic map of the unit
 // sphere, and on a planar grid; the measurements behind the default time
 // factor (doc/time_factor.md).
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Heat_exponential_map.h>
 
 #include <CGAL/Heat_method_3/Surface_mesh_geodesic_distances_3.h>
@@ -10,6 +9,8 @@
 
 #include <random>
 
+#include "Analytic_exponential_maps.h"
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -29,15 +30,15 @@ std::vector<std::size_t> random_sources(std::size_t n, std::size_t count, unsign
   return sources;
 }
 
-const expmap::Triangle_soup& unit_icosphere_40962() {
-  static const expmap::Triangle_soup soup = expmap::make_icosphere(6, 1.0);
+const expmap_analytic::Triangle_soup& unit_icosphere_40962() {
+  static const expmap_analytic::Triangle_soup soup = expmap_analytic::make_icosphere(6, 1.0);
   return soup;
 }
 
 Errors sphere_errors(double time_factor, const std::vector<std::size_t>& sources) {
-  const expmap::Triangle_soup& soup = unit_icosphere_40962();
+  const expmap_analytic::Triangle_soup& soup = unit_icosphere_40962();
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_options options;
   options.time_factor = time_factor;
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
@@ -46,8 +47,8 @@ Errors sphere_errors(double time_factor, const std::vector<std::size_t>& sources
     const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.5));
     std::vector<double> computed, exact, distance_errors;
     for (std::size_t i = 1; i < map.size(); ++i) {
-      const auto polar = expmap::sphere_exponential_map(soup.points[s], soup.points[map.indices[i]],
-                                                        1.0, map.axis_u);
+      const auto polar = expmap_analytic::sphere_exponential_map(
+          soup.points[s], soup.points[map.indices[i]], 1.0, map.axis_u);
       computed.push_back(map.angle[i]);
       exact.push_back(polar.theta_unrotated);
       distance_errors.push_back(std::abs(map.distance[i] - polar.r));
@@ -78,9 +79,9 @@ BOOST_AUTO_TEST_CASE(distances_at_time_factor_1_no_worse_than_cgal) {
   const Errors ours = sphere_errors(1, sources);
 
   // CGAL's heat method (t = h^2) on the same mesh, same vertices (r <= 0.5).
-  const expmap::Triangle_soup& soup = unit_icosphere_40962();
+  const expmap_analytic::Triangle_soup& soup = unit_icosphere_40962();
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   CGAL::Heat_method_3::Surface_mesh_geodesic_distances_3<Surface_mesh> cgal(mesh);
   auto d = mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:d", 0.0).first;
   std::vector<double> cgal_errors;
@@ -92,7 +93,8 @@ BOOST_AUTO_TEST_CASE(distances_at_time_factor_1_no_worse_than_cgal) {
     std::vector<double> errors;
     for (auto v : vertices(mesh)) {
       const double exact =
-          expmap::sphere_exponential_map(soup.points[s], soup.points[v], 1.0, {{1, 0, 0}}).r;
+          expmap_analytic::sphere_exponential_map(soup.points[s], soup.points[v], 1.0, {{1, 0, 0}})
+              .r;
       if (exact <= 0.5 && v != source) errors.push_back(std::abs(get(d, v) - exact));
     }
     cgal_errors.push_back(mean(errors));
@@ -122,16 +124,16 @@ BOOST_AUTO_TEST_CASE(time_factor_table) {
   }
 }
 
-void check_planar(const expmap::Triangle_soup& soup, std::size_t s, const char* name,
+void check_planar(const expmap_analytic::Triangle_soup& soup, std::size_t s, const char* name,
                   double angle_bound, double distance_bound_in_h) {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.5));
   std::vector<double> computed, exact, distance_errors;
   for (std::size_t i = 1; i < map.size(); ++i) {
-    const auto polar =
-        expmap::plane_exponential_map(soup.points[s], soup.points[map.indices[i]], map.axis_u);
+    const auto polar = expmap_analytic::plane_exponential_map(
+        soup.points[s], soup.points[map.indices[i]], map.axis_u);
     computed.push_back(map.angle[i]);
     exact.push_back(polar.theta_unrotated);
     distance_errors.push_back(std::abs(map.distance[i] - polar.r));
@@ -147,9 +149,9 @@ void check_planar(const expmap::Triangle_soup& soup, std::size_t s, const char* 
 BOOST_AUTO_TEST_CASE(planar_grids_are_nearly_exact) {
   // Sources at the centre, radius 0.5, far from the boundary. Bounds are the
   // measured errors (see the test log) rounded up.
-  check_planar(expmap::make_equilateral_grid(50, 0.02), 0, "equilateral grid", 2e-4, 0.15);
-  check_planar(expmap::make_grid(100, 100, 2.0, 2.0), expmap::grid_origin_vertex(100, 100),
-               "union-jack grid", 7e-3, 0.1);
+  check_planar(expmap_analytic::make_equilateral_grid(50, 0.02), 0, "equilateral grid", 2e-4, 0.15);
+  check_planar(expmap_analytic::make_grid(100, 100, 2.0, 2.0),
+               expmap_analytic::grid_origin_vertex(100, 100), "union-jack grid", 7e-3, 0.1);
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Step 2 of a heat query on one face, from its precomputed stencil, against
+// Step 3 of a heat query on one face, from its precomputed stencil, against
 // the same quantity computed in space from the triangle's corners: the unit
 // gradient X of the linear interpolant of u, and the integrated divergence
 // at a corner a as the flux of X through the half edges next to it,

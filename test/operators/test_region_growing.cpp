@@ -7,7 +7,6 @@
 // against a plain std::queue search); rings grown around some of a region's
 // edge vertices must be those of a multi-source search.
 
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/internal/Indexed_mesh.h>
 #include <expmap/internal/Region_growing.h>
 
@@ -19,6 +18,8 @@
 #include <algorithm>
 #include <queue>
 #include <vector>
+
+#include "Analytic_surfaces.h"
 
 namespace {
 
@@ -46,7 +47,7 @@ std::vector<int> hops_from(const expmap::internal::Mesh_arrays& m, int source) {
 struct Icosphere {
   Surface_mesh mesh = [] {
     Surface_mesh sphere;
-    expmap::soup_to_mesh(expmap::make_icosphere(4, 1.0), sphere);
+    expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(4, 1.0), sphere);
     return sphere;
   }();
   const expmap::internal::Indexed_mesh<Surface_mesh, CGAL::Default> indexed{

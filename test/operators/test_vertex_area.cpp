@@ -9,11 +9,11 @@
 // barycentric mass does not on irregular triangles; and both share out
 // every triangle's area.
 
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/internal/Cotan_operators.h>
 
 #include <boost/test/unit_test.hpp>
 
+#include "Analytic_surfaces.h"
 #include "Triangulation_from_points.h"
 
 #include <array>
@@ -30,9 +30,9 @@ using expmap::internal::Intrinsic_triangulation;
 // A hexagonal patch of equilateral triangles (edge 1) with its inner
 // vertices moved by up to `jitter` (reproducibly): irregular, still
 // non-obtuse for small jitter.
-expmap::Triangle_soup jittered_planar_grid(double jitter) {
+expmap_analytic::Triangle_soup jittered_planar_grid(double jitter) {
   const int rings = 8;
-  expmap::Triangle_soup soup = expmap::make_equilateral_grid(rings, 1.0);
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_equilateral_grid(rings, 1.0);
   const std::size_t outer_ring_start = std::size_t(1 + 3 * rings * (rings - 1));
   std::uint64_t state = 12345;
   auto unit = [&state]() {  // splitmix64, in [-1, 1)
@@ -49,7 +49,7 @@ expmap::Triangle_soup jittered_planar_grid(double jitter) {
 }
 
 // Whether each vertex lies on the boundary (an edge with one triangle).
-std::vector<bool> boundary_vertices(const expmap::Triangle_soup& soup) {
+std::vector<bool> boundary_vertices(const expmap_analytic::Triangle_soup& soup) {
   std::map<std::pair<std::size_t, std::size_t>, int> edge_faces;
   for (const auto& t : soup.triangles)
     for (int k = 0; k < 3; ++k) {
@@ -63,7 +63,8 @@ std::vector<bool> boundary_vertices(const expmap::Triangle_soup& soup) {
 }
 
 // The largest |(L |x|^2)_v / M_v + 4| over interior vertices.
-double largest_quadratic_defect(const expmap::Triangle_soup& soup, const Eigen::VectorXd& mass,
+double largest_quadratic_defect(const expmap_analytic::Triangle_soup& soup,
+                                const Eigen::VectorXd& mass,
                                 const expmap::internal::Sparse_matrix& L) {
   Eigen::VectorXd square(static_cast<Eigen::Index>(soup.points.size()));
   for (std::size_t v = 0; v < soup.points.size(); ++v)
@@ -82,7 +83,7 @@ double largest_quadratic_defect(const expmap::Triangle_soup& soup, const Eigen::
 BOOST_AUTO_TEST_SUITE(vertex_area)
 
 BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
-  const expmap::Triangle_soup soup = jittered_planar_grid(0.12);
+  const expmap_analytic::Triangle_soup soup = jittered_planar_grid(0.12);
   const Intrinsic_triangulation tri = expmap_test::make_triangulation(soup.points, soup.triangles);
   const auto shapes = expmap::internal::triangle_shapes(tri);
   for (const auto& shape : shapes)
@@ -98,7 +99,7 @@ BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
   BOOST_TEST(barycentric_defect > 0.05);  // the irregularity the mixed area corrects
 
   // On the regular grid both are the same.
-  const expmap::Triangle_soup regular = jittered_planar_grid(0.0);
+  const expmap_analytic::Triangle_soup regular = jittered_planar_grid(0.0);
   const Intrinsic_triangulation regular_tri =
       expmap_test::make_triangulation(regular.points, regular.triangles);
   const auto regular_shapes = expmap::internal::triangle_shapes(regular_tri);
@@ -109,7 +110,7 @@ BOOST_AUTO_TEST_CASE(mixed_voronoi_mass_inverts_the_laplacian_of_a_quadratic) {
 
 BOOST_AUTO_TEST_CASE(both_masses_share_out_every_triangle) {
   // Strongly jittered: obtuse triangles take the half / quarter split.
-  const expmap::Triangle_soup soup = jittered_planar_grid(0.45);
+  const expmap_analytic::Triangle_soup soup = jittered_planar_grid(0.45);
   const Intrinsic_triangulation tri = expmap_test::make_triangulation(soup.points, soup.triangles);
   const auto shapes = expmap::internal::triangle_shapes(tri);
   std::size_t obtuse = 0;

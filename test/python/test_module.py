@@ -40,7 +40,8 @@ def test_batch_equals_single_queries(elephant, method, threads):
         np.testing.assert_array_equal(batch.theta[rows], local.theta)
         np.testing.assert_array_equal(batch.u[rows], local.uv[:, 0])
         np.testing.assert_array_equal(batch.v[rows], local.uv[:, 1])
-    assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v"}
+    assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v",
+                                    "fold_free_radius"}
 
 
 def test_batch_maps_index_and_iterate_as_views(heat):
@@ -235,7 +236,7 @@ def test_bad_meshes_raise_value_error(cactus, method):
 def test_bad_options_raise_value_error(cactus):
     _, V, F = cactus
     for options in ({"time_factor": 0.0}, {"time_factor": float("nan")}, {"time_factor": -1.0},
-                    {"distance_time_factor": float("inf")}, {"region_growth": 0.5},
+                    {"time_factor": float("inf")}, {"region_growth": 0.5},
                     {"pruning_tolerance": -1.0}, {"poisson_compression_tolerance": 1e-6},
                     {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None},
                     {"query_threads": 0}, {"query_threads": 3}):

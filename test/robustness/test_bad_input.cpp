@@ -1,6 +1,5 @@
 // Bad input gets a clear exception or a documented correct result: never a
 // crash, a hang or a NaN in the output.
-#include <expmap/Analytic_surfaces.h>
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/IO/read_triangle_mesh.h>
 
@@ -8,6 +7,7 @@
 
 #include <limits>
 
+#include "Analytic_surfaces.h"
 #include "test_support.h"
 
 using namespace expmap_test;
@@ -29,7 +29,7 @@ void check_message(F f, const std::string& needle) {
 
 Surface_mesh small_grid() {
   Surface_mesh mesh;
-  expmap::soup_to_mesh(expmap::make_grid(10, 10, 1.0, 1.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(10, 10, 1.0, 1.0), mesh);
   return mesh;
 }
 
@@ -136,13 +136,13 @@ BOOST_AUTO_TEST_CASE(isolated_vertex_is_ignored_but_cannot_be_a_source) {
 }
 
 BOOST_AUTO_TEST_CASE(patches_stay_in_the_source_component) {
-  expmap::Triangle_soup soup = expmap::make_grid(6, 6, 1.0, 1.0);
-  const expmap::Triangle_soup other = expmap::make_grid(6, 6, 1.0, 1.0);
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(6, 6, 1.0, 1.0);
+  const expmap_analytic::Triangle_soup other = expmap_analytic::make_grid(6, 6, 1.0, 1.0);
   const int offset = static_cast<int>(soup.points.size());
   for (auto p : other.points) soup.points.push_back({{p[0] + 3, p[1], p[2]}});
   for (auto t : other.triangles) soup.triangles.push_back({{t[0] + offset, t[1] + offset, t[2] + offset}});
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   const auto map = heat.compute_by_index(24, expmap::Patch::fraction(1.0));
   BOOST_TEST(map.size() == 49u);
@@ -155,9 +155,9 @@ BOOST_AUTO_TEST_CASE(source_on_the_boundary_works) {
   // Neumann boundary: a corner source still gets finite distances close to
   // the Euclidean ones on a flat grid. The heat method smooths most near a
   // boundary (Crane et al. 2013, section 3.2.3); the bound is measured.
-  const expmap::Triangle_soup soup = expmap::make_grid(40, 40, 1.0, 1.0);
+  const expmap_analytic::Triangle_soup soup = expmap_analytic::make_grid(40, 40, 1.0, 1.0);
   Surface_mesh mesh;
-  expmap::soup_to_mesh(soup, mesh);
+  expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   for (std::size_t source : {0u, 20u}) {  // a corner and a boundary edge midpoint
     const auto map = heat.compute_by_index(source, expmap::Patch::geodesic_radius(0.4));

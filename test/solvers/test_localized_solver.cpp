@@ -9,6 +9,7 @@
 
 #include <Eigen/Sparse>
 
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -17,6 +18,7 @@ namespace {
 using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
 using expmap_test::random_grid_operator;
+using expmap::internal::Localized_cholesky_solver;
 
 // A random grid operator factored by a solver model, and its localized
 // solver.
@@ -46,15 +48,17 @@ void check_rows_against_full_solve(Solver& solver, const Eigen::MatrixXd& B, int
   }
 }
 
-// Solves random sparse blocks (widths 1 to 20, split above 16) and compares
-// every requested row with the solver model's own full solve; a pruned
-// solve with drop_below = 0 must give the same numbers.
+// Solves random sparse blocks (widths 1 to 20, split above the
+// workspace's width) and compares every requested row with the solver
+// model's own full solve; a pruned solve whose threshold drops only zeros
+// (drop_below the smallest subnormal) must give the same numbers.
 template <class Solver>
-void check_against_full_solve(unsigned seed, bool pruned = false) {
+void check_against_full_solve(unsigned seed, bool pruned = false,
+                              int max_width = Localized_cholesky_solver::max_block_width) {
   Factored_grid<Solver> grid(seed);
   const int n = grid.n;
   auto& local = grid.local;
-  auto ws = local.make_workspace();
+  auto ws = local.make_workspace(max_width);
   std::mt19937 rng(seed + 7);
   std::uniform_int_distribution<int> pick(0, n - 1);
   for (int trial = 0; trial < 5; ++trial) {
@@ -72,8 +76,8 @@ void check_against_full_solve(unsigned seed, bool pruned = false) {
       for (int k = 0; k < 200; ++k) rows.push_back(pick(rng));
       std::vector<double> out(rows.size() * width);
       const auto stats =
-          pruned ? local.solve_pruned(entries, width, rows.data(), rows.size(), out.data(), *ws, 0.0)
-                 : local.solve(entries, width, rows.data(), rows.size(), out.data(), *ws);
+          local.solve(entries, width, rows.data(), rows.size(), out.data(), *ws,
+                      pruned ? std::numeric_limits<double>::denorm_min() : 0.0);
       BOOST_TEST(stats.forward_nodes > 0u);
       check_rows_against_full_solve(grid.solver, B, width, rows, out);
     }
@@ -147,9 +151,42 @@ BOOST_AUTO_TEST_CASE(eigen_localized_equals_full_solve) {
   check_against_full_solve<expmap::Eigen_simplicial_solver>(2);
 }
 
-BOOST_AUTO_TEST_CASE(pruned_solve_without_threshold_equals_full_solve) {
+BOOST_AUTO_TEST_CASE(pruned_solve_dropping_only_zeros_equals_full_solve) {
   check_against_full_solve<expmap::Cholmod_solver>(4, /*pruned=*/true);
   check_against_full_solve<expmap::Eigen_simplicial_solver>(5, /*pruned=*/true);
+}
+
+// A workspace holds blocks of the width it was made for (rounded up to a
+// kernel's): solve() splits wider ones, solve_extendable() refuses them.
+BOOST_AUTO_TEST_CASE(narrow_workspaces_split_wide_blocks) {
+  check_against_full_solve<expmap::Cholmod_solver>(6, /*pruned=*/false, /*max_width=*/1);
+  check_against_full_solve<expmap::Cholmod_solver>(7, /*pruned=*/true, /*max_width=*/3);
+}
+
+BOOST_AUTO_TEST_CASE(workspace_width_sizes_the_block) {
+  Factored_grid<expmap::Cholmod_solver> grid(8);
+  const auto& local = grid.local;
+  auto narrow = local.make_workspace(1);
+  auto wide = local.make_workspace();
+  BOOST_TEST(narrow->max_width() == 1);
+  BOOST_TEST(wide->max_width() == Localized_cholesky_solver::max_block_width);
+  BOOST_TEST(local.make_workspace(3)->max_width() == 4);
+  BOOST_TEST(local.make_workspace(40)->max_width() == Localized_cholesky_solver::max_block_width);
+  BOOST_CHECK_THROW(local.make_workspace(0), std::invalid_argument);
+  // The block is n x width doubles.
+  const std::size_t n = static_cast<std::size_t>(grid.n);
+  BOOST_TEST(wide->bytes() >= narrow->bytes() + 15 * n * sizeof(double));
+  BOOST_TEST(narrow->bytes() < 2 * n * sizeof(double) + 32 * local.number_of_supernodes());
+
+  const std::vector<expmap::internal::Rhs_entry> entries{{10, 0, 1.0}, {20, 1, 1.0}};
+  std::vector<int> rows{10, 20, 30};
+  std::vector<double> out(rows.size() * 2);
+  BOOST_CHECK_THROW(
+      local.solve_extendable(entries, 2, rows.data(), rows.size(), out.data(), *narrow),
+      std::invalid_argument);
+  auto two = local.make_workspace(2);
+  local.solve_extendable(entries, 2, rows.data(), rows.size(), out.data(), *two);
+  BOOST_CHECK_NO_THROW(local.extend(rows.data(), rows.size(), out.data(), *two));
 }
 
 // The heat and Poisson systems of a mesh share their sparsity, so the

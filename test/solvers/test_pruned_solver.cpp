@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -51,8 +52,8 @@ void check_pruned_heat(double weight_scale, int cx, int cy, int radius) {
   const double smallest = Localized_cholesky_solver::smallest_magnitude(full.data(), full.size());
   BOOST_TEST_REQUIRE(smallest > 0.0);
   const double drop_below = tolerance * smallest;
-  const auto pruned_stats = local.solve_pruned(entries, width, disk.data(), disk.size(),
-                                               pruned.data(), *ws, drop_below);
+  const auto pruned_stats =
+      local.solve(entries, width, disk.data(), disk.size(), pruned.data(), *ws, drop_below);
   // The documented a posteriori check holds (the pruned values differ from
   // the full ones by far less than 1%).
   BOOST_TEST(drop_below <= 1.01 * tolerance * Localized_cholesky_solver::smallest_magnitude(
@@ -75,18 +76,27 @@ void check_pruned_heat(double weight_scale, int cx, int cy, int radius) {
   };
   check(pruned, "pruned");
 
-  // The self-checking variant, with a good hint, none, and one far too
-  // large (which must be caught and solved again).
+  // A threshold from a guess of the smallest value (as a query guesses it
+  // from an earlier solve), checked a posteriori: a good guess passes; one
+  // far too large is caught, and the solve again with the smallest value
+  // it returned (pruning only lowers this nonnegative inverse's values, so
+  // that is below the true smallest) is accurate.
   const double largest = std::abs(*std::max_element(full.begin(), full.end(), [](double a, double b) {
     return std::abs(a) < std::abs(b);
   }));
-  for (const double hint : {smallest, 0.0, largest}) {
-    std::vector<double> relative(full.size());
-    const auto stats = local.solve_pruned_relative(entries, width, disk.data(), disk.size(),
-                                                   relative.data(), *ws, tolerance, hint);
-    check(relative, hint == 0.0 ? "no hint" : hint == smallest ? "good hint" : "hint too large");
+  for (const double hint : {smallest, largest}) {
+    std::vector<double> values(full.size());
+    auto stats = local.solve(entries, width, disk.data(), disk.size(), values.data(), *ws,
+                             tolerance * hint);
+    const double smallest_returned =
+        Localized_cholesky_solver::smallest_magnitude(values.data(), values.size());
+    const bool caught = tolerance * hint > 2 * tolerance * smallest_returned;
+    BOOST_TEST(caught == (hint == largest));
+    if (caught)
+      stats += local.solve(entries, width, disk.data(), disk.size(), values.data(), *ws,
+                           tolerance * smallest_returned);
+    check(values, hint == smallest ? "good hint" : "hint too large, solved again");
     if (hint == smallest) BOOST_TEST(stats.factor_entries == pruned_stats.factor_entries);
-    if (hint == 0.0) BOOST_TEST(stats.factor_entries <= full_stats.factor_entries);
   }
   BOOST_TEST(pruned_stats.factor_entries < full_stats.factor_entries);
   BOOST_TEST_MESSAGE("pruned solve read " << pruned_stats.factor_entries << " of "
@@ -123,8 +133,8 @@ void check_extended_pruned_heat(int cx, int cy, int radius, int wider) {
   std::vector<double> unpruned(inner.size()), pruned(inner.size()), extended(outer.size());
   const auto full_stats =
       local.solve_extendable(entries, 1, inner.data(), inner.size(), unpruned.data(), *ws);
-  const auto pruned_stats = local.solve_extendable_pruned(
-      entries, 1, inner.data(), inner.size(), pruned.data(), *ws, 1e-12 * smallest);
+  const auto pruned_stats = local.solve_extendable(entries, 1, inner.data(), inner.size(),
+                                                   pruned.data(), *ws, 1e-12 * smallest);
   local.extend(outer.data(), outer.size(), extended.data(), *ws);
   auto worst_error = [&](const std::vector<int>& rows, const std::vector<double>& values) {
     double worst = 0;
@@ -168,10 +178,11 @@ BOOST_AUTO_TEST_CASE(pruned_solve_rejects_a_negative_threshold) {
   std::vector<Rhs_entry> entries{{5, 0, 1.0}};
   int row = 5;
   double out = 0;
-  BOOST_CHECK_THROW(local.solve_pruned(entries, 1, &row, 1, &out, *ws, -1.0),
-                    std::invalid_argument);
-  BOOST_CHECK_THROW(local.solve_pruned(entries, 1, &row, 1, &out, *ws, std::nan("")),
-                    std::invalid_argument);
+  for (const double bad : {-1.0, std::nan(""), std::numeric_limits<double>::infinity()}) {
+    BOOST_CHECK_THROW(local.solve(entries, 1, &row, 1, &out, *ws, bad), std::invalid_argument);
+    BOOST_CHECK_THROW(local.solve_extendable(entries, 1, &row, 1, &out, *ws, bad),
+                      std::invalid_argument);
+  }
 }
 
 BOOST_AUTO_TEST_SUITE_END()

@@ -5,7 +5,6 @@
 
 #include <array>
 #include <cstddef>
-#include <vector>
 
 namespace expmap {
 namespace internal {
@@ -13,7 +12,7 @@ namespace internal {
 // The dense kernels the triangular solves are made of, on row-major blocks
 // of W right-hand sides: a row's dot product with the solved values, and
 // four solved rows subtracted from the others at once, on the supernodes'
-// dense blocks (Localized_cholesky_solver).
+// dense blocks (Supernode_kernels).
 
 /// out[w] -= sum over c in [begin, end) of l[c] * y[c * W + w]. Several
 /// independent partial sums: without them every multiply-add waits for the
@@ -44,14 +43,6 @@ void subtract_four_rows(const T* const (&l)[4], const std::array<std::array<doub
     for (int w = 0; w < W; ++w)
       ys[a * W + w] -=
           l[0][a] * x[0][w] + l[1][a] * x[1][w] + l[2][a] * x[2][w] + l[3][a] * x[3][w];
-}
-
-/// Per-thread scratch of `size` zeros (the r x W products of the low-rank
-/// blocks). A kernel holds it only until it calls another that uses it.
-inline double* zeroed_scratch(std::size_t size) {
-  thread_local std::vector<double> scratch;
-  scratch.assign(size, 0.0);
-  return scratch.data();
 }
 
 }  // namespace internal

@@ -15,7 +15,7 @@ namespace expmap {
 namespace internal {
 
 /// The faces of a triangulation grouped under their smallest corner, with
-/// each face's corners and divergence stencil (step 2 of a query) stored
+/// each face's corners and divergence stencil (step 3 of a query) stored
 /// side by side.
 ///
 /// A query that visits the faces of a set of vertices then finds every face

@@ -6,23 +6,21 @@
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Dense_row_kernels.h>
-#include <expmap/internal/Huge_page_allocator.h>
+#include <expmap/internal/Largest_first_frontier.h>
+#include <expmap/internal/Localized_solve_workspace.h>
 #include <expmap/internal/Low_rank_rows_below.h>
 #include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/Supernode_kernels.h>
+#include <expmap/internal/Supernode_tree.h>
 
 #include <algorithm>
-#include <array>
-#include <cassert>
 #include <chrono>
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -47,78 +45,21 @@ struct Rhs_entry {
 /// start nodes, marking as we go, which also yields a topological order
 /// without sorting: paths found later are placed before paths found earlier.
 ///
-/// All columns of the block share one traversal of L. The block is stored
-/// row-major with a compile-time width so that the update of one row is a
-/// short fixed-length loop the compiler vectorizes.
+/// All columns of the block share one traversal of L, supernode by
+/// supernode (`Supernode_kernels`). The block is stored row-major with a
+/// compile-time width so that the update of one row is a short
+/// fixed-length loop the compiler vectorizes.
 ///
 /// The object is immutable after construction; per-query scratch lives in a
 /// `Workspace`, so many threads can solve at once with one workspace each.
 class Localized_cholesky_solver {
  public:
-  /// Widest block solved in one traversal; wider blocks are split.
-  static constexpr int max_block_width = 16;
+  /// Widest block solved in one traversal, and a workspace's width unless
+  /// it is made narrower; wider blocks are split.
+  static constexpr int max_block_width = Supernode_kernels::max_width;
 
-  /// Per-thread scratch memory: a dense block of size n x width that is
-  /// kept zero between solves (only touched rows are cleared), node lists and
-  /// visit stamps (so no O(n) clearing is ever needed per query).
-  class Workspace {
-   public:
-    Workspace() = default;
-    /// Scratch for a factor of order `n` with `supernodes` supernodes.
-    Workspace(int n, std::size_t supernodes) { resize(n, supernodes); }
-
-   private:
-    friend class Localized_cholesky_solver;
-    bool fits(int n, std::size_t supernodes) const {
-      return m_size == n && m_forward_stamp.size() == supernodes;
-    }
-    void resize(int n, std::size_t supernodes) {
-      m_size = n;
-      // Rows of the block start on cache lines (a row of 8 doubles is one line).
-      constexpr std::size_t line = 64 / sizeof(double);
-      m_storage.assign(static_cast<std::size_t>(n) * max_block_width + line, 0.0);
-      const auto address = reinterpret_cast<std::uintptr_t>(m_storage.data());
-      m_block = m_storage.data() + (line - (address / sizeof(double)) % line) % line;
-      m_forward_stamp.assign(supernodes, 0);
-      m_backward_stamp.assign(supernodes, 0);
-      m_forward_entry.assign(supernodes, 0);
-      m_backward_entry.assign(supernodes, 0);
-      m_stamp = 0;
-      m_open_width = 0;
-    }
-    std::uint32_t next_stamp() {
-      if (++m_stamp == 0) {  // wrapped around: the stamps must start afresh
-        std::fill(m_forward_stamp.begin(), m_forward_stamp.end(), 0);
-        std::fill(m_backward_stamp.begin(), m_backward_stamp.end(), 0);
-        m_stamp = 1;
-      }
-      return m_stamp;
-    }
-    std::vector<double, Huge_page_allocator<double>> m_storage;
-    double* m_block = nullptr;  // m_storage, aligned
-    std::vector<std::uint32_t> m_forward_stamp, m_backward_stamp;
-    std::vector<int> m_forward_entry, m_backward_entry;  // first column needed
-    std::vector<int> m_forward_nodes, m_backward_nodes, m_path;
-    std::vector<int> m_kept;  // pruned solves: propagated columns or rows of a supernode
-    // An extendable solve left in the block: its kernel width (0 if none)
-    // and its number of columns; the entries of its supernodes before an
-    // extension, and the supernodes the extension adds.
-    int m_open_width = 0, m_open_columns = 0;
-    std::vector<int> m_previous_entry, m_extension_nodes;
-    // An open solve_largest: the supernodes not visited yet whose parents
-    // were, as a heap of (bound, supernode); the values solved, counted by
-    // bucket (value_bucket), those in the buckets touched; the lowest bucket
-    // whose values are counted as above the bounds left, and how many
-    // values that is; how many values were written.
-    bool m_largest_open = false;
-    std::vector<std::pair<double, int>> m_frontier;
-    std::vector<std::uint32_t> m_bucket_count;
-    std::size_t m_buckets_touched_from = 0, m_buckets_touched_to = 0;
-    std::size_t m_bucket_floor = 0, m_values_above = 0, m_largest_values = 0;
-    double m_largest_drop_below = 0;  // its pruning (0: none)
-    std::uint32_t m_stamp = 0;
-    int m_size = -1;
-  };
+  /// Per-thread scratch memory of the solves, and a solve left open.
+  using Workspace = Localized_solve_workspace;
 
   Localized_cholesky_solver() = default;
 
@@ -129,23 +70,21 @@ class Localized_cholesky_solver {
   explicit Localized_cholesky_solver(
       const Cholesky_factor_view& factor,
       Factor_precision precision = Factor_precision::double_precision)
-      : m_factor(make_supernodal_factor(factor, precision)) {
+      : m_factor(make_supernodal_factor(factor, precision)), m_tree(m_factor) {
     m_inverse_diagonal.resize(static_cast<std::size_t>(m_factor.size));
     for (const auto& sn : m_factor.supernode)
-      with_entries(sn, [this, &sn](const auto* entries) {
+      m_factor.with_entries(sn, [this, &sn](const auto* entries) {
         for (int c = 0; c < sn.ncol; ++c)
-          m_inverse_diagonal[sn.first_column + c] =
-              1.0 / static_cast<double>(entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
+          m_inverse_diagonal[sn.first_column + c] = 1.0 / static_cast<double>(
+              entries[sn.diagonal + Supernodal_factor::triangle_row(c) + c]);
       });
-    compute_tree_height();
-    compute_children();
   }
 
   int size() const { return m_factor.size; }
 
   /// Height of the elimination tree (number of nodes on its longest
   /// leaf-to-root path).
-  int tree_height() const { return m_tree_height; }
+  int tree_height() const { return m_tree.height(); }
 
   /// Stored entries of the supernodal factor (dense blocks included).
   std::size_t number_of_entries() const { return m_factor.number_of_entries(); }
@@ -181,80 +120,23 @@ class Localized_cholesky_solver {
   /// Number of supernodes whose rows below are kept in low-rank form.
   std::size_t number_of_compressed_supernodes() const { return m_compressed_supernodes; }
 
-  /// A workspace sized for this factor.
-  std::unique_ptr<Workspace> make_workspace() const {
-    auto ws = std::make_unique<Workspace>();
-    ws->resize(m_factor.size, number_of_supernodes());
-    return ws;
+  /// A workspace sized for this factor, for blocks of up to `max_width`
+  /// columns (see `Workspace::max_width()`).
+  /// \pre max_width >= 1 (else std::invalid_argument).
+  std::unique_ptr<Workspace> make_workspace(int max_width = max_block_width) const {
+    return std::make_unique<Workspace>(m_factor.size, number_of_supernodes(), max_width);
   }
 
   /// Solves A X = B where B has `width` columns given by its nonzero
   /// `entries` (rows of A, duplicates are summed), and writes X(rows[i], c)
-  /// to `out[i * width + c]`. Exact: the same numbers as a full solve.
-  /// \returns what the solve touched.
-  Solve_statistics solve(const std::vector<Rhs_entry>& entries, int width,
-                         const int* rows, std::size_t row_count, double* out,
-                         Workspace& ws) const {
-    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{});
-  }
-
-  /// As `solve()` (at most `max_block_width` columns), but keeps the
-  /// solution in the workspace so that `extend()` can return it on more
-  /// rows, redoing neither the forward substitution nor the back substitution
-  /// of the nodes already solved. The workspace stays busy until the next
-  /// solve of any kind on it, or `release()`.
-  Solve_statistics solve_extendable(const std::vector<Rhs_entry>& entries, int width,
-                                    const int* rows, std::size_t row_count, double* out,
-                                    Workspace& ws) const {
-    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{});
-  }
-
-  /// `solve_extendable()` pruned as `solve_pruned()` prunes. `extend()`
-  /// then solves the new supernodes in full, from the pruned values above
-  /// them: the new rows' values carry the pruning error of those values
-  /// (at most about `drop_below`), so a caller checking the choice of
-  /// `drop_below` checks it on the extended rows too.
-  /// \pre drop_below >= 0 and finite.
-  Solve_statistics solve_extendable_pruned(const std::vector<Rhs_entry>& entries, int width,
-                                           const int* rows, std::size_t row_count, double* out,
-                                           Workspace& ws, double drop_below) const {
-    check_drop_below(drop_below);
-    return solve_and_keep(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
-  }
-
-  /// The solution of the last `solve_extendable()` on `ws` at `rows` (which
-  /// may repeat rows returned before), written as `solve()` writes it: the
-  /// same numbers as a full solve. Only the back substitution of the
-  /// supernodes the new rows need beyond those already solved is done.
-  /// \pre `ws` holds an extendable solve (else std::logic_error).
-  Solve_statistics extend(const int* rows, std::size_t row_count, double* out,
-                          Workspace& ws) const {
-    if (ws.m_open_width == 0)
-      throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
-    const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = with_open_width(ws, [&](auto width) {
-      return extend_block<decltype(width)::value>(rows, row_count, out, ws);
-    });
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
-  }
-
-  /// Ends an extendable solve: the workspace is ready for any solve (which
-  /// would release it too).
-  void release(Workspace& ws) const {
-    if (ws.m_open_width == 0) return;
-    with_open_width(ws, [&](auto width) { clear_block<decltype(width)::value>(ws); });
-    ws.m_open_width = 0;
-    ws.m_largest_open = false;
-  }
-
-  /// As `solve()`, but an entry of the forward solution y (L y = P b) or of
-  /// the back solution x whose magnitude is at most `drop_below` in every
-  /// column of the block is not propagated: the entries it would update
-  /// are computed as if it were zero (its own value is still computed and
-  /// returned if requested). With `drop_below = 0` only exact zeros are
-  /// skipped and the result equals `solve()`'s.
+  /// to `out[i * width + c]`. With `drop_below` = 0 the solve is exact: the
+  /// same numbers as a full solve.
+  ///
+  /// With `drop_below` > 0 the solve is pruned: an entry of the forward
+  /// solution y (L y = P b) or of the back solution x whose magnitude is at
+  /// most `drop_below` in every column of the block is not propagated: the
+  /// entries it would update are computed as if it were zero (its own value
+  /// is still computed and returned if requested).
   ///
   /// Why it pays: the dense separators at the top of the elimination tree
   /// span the whole mesh, and every solve walks them; but the solution of a
@@ -275,42 +157,59 @@ class Localized_cholesky_solver {
   /// up to rounding (the pruned values are within tau of the full ones).
   /// Systems whose solution does not decay (the Poisson system of the
   /// distance step) gain nothing.
-  /// \pre drop_below >= 0 and finite.
-  Solve_statistics solve_pruned(const std::vector<Rhs_entry>& entries, int width,
-                                const int* rows, std::size_t row_count, double* out,
-                                Workspace& ws, double drop_below) const {
+  /// \pre drop_below >= 0 and finite (else std::invalid_argument).
+  /// \returns what the solve touched.
+  Solve_statistics solve(const std::vector<Rhs_entry>& entries, int width,
+                         const int* rows, std::size_t row_count, double* out,
+                         Workspace& ws, double drop_below = 0) const {
     check_drop_below(drop_below);
-    return solve_in_blocks(entries, width, rows, row_count, out, ws, Pruning{true, drop_below});
+    return solve_in_blocks(entries, width, rows, row_count, out, ws, drop_below);
   }
 
-  /// A pruned solve that keeps every returned value accurate relative to
-  /// itself: `solve_pruned()` with drop_below = tolerance * smallest_hint,
-  /// `smallest_hint` a guess of the smallest magnitude this solve returns
-  /// (from an earlier solve; 0 for none, which solves without pruning). If
-  /// the guess was too large (drop_below > 2 * tolerance * the smallest
-  /// value returned), solves again with drop_below = tolerance * that value,
-  /// which can only be smaller than the true smallest one (pruning
-  /// lowers the values of a nonnegative inverse). Measured on the heat
-  /// system of a 2.85M-vertex mesh, tolerance 1e-16 keeps every value to
-  /// 3e-15 relative and 1e-12 does too (doc/paper_scale.md).
-  /// \returns the statistics of both solves if it solved twice; `out` holds
-  ///          the last one.
-  /// \pre tolerance and smallest_hint >= 0 and finite.
-  Solve_statistics solve_pruned_relative(const std::vector<Rhs_entry>& entries, int width,
-                                         const int* rows, std::size_t row_count, double* out,
-                                         Workspace& ws, double tolerance,
-                                         double smallest_hint) const {
-    if (!(tolerance >= 0) || !std::isfinite(tolerance) || !(smallest_hint >= 0) ||
-        !std::isfinite(smallest_hint))
-      throw std::invalid_argument(
-          "Localized_cholesky_solver: tolerance and smallest_hint must be >= 0 and finite");
-    const double drop_below = tolerance * smallest_hint;
-    Solve_statistics stats = solve_pruned(entries, width, rows, row_count, out, ws, drop_below);
-    const double smallest =
-        smallest_magnitude(out, row_count * static_cast<std::size_t>(width));
-    if (drop_below > 2 * tolerance * smallest)  // 2: room for rounding in `smallest`
-      stats += solve_pruned(entries, width, rows, row_count, out, ws, tolerance * smallest);
-    return stats;
+  /// As `solve()` (at most `ws.max_width()` columns, else
+  /// std::invalid_argument), but keeps the
+  /// solution in the workspace so that `extend()` can return it on more
+  /// rows, redoing neither the forward substitution nor the back substitution
+  /// of the nodes already solved. The workspace stays busy until the next
+  /// solve of any kind on it, or `release()`.
+  ///
+  /// Pruned (`drop_below` > 0), `extend()` then solves the new supernodes
+  /// in full, from the pruned values above them: the new rows' values carry
+  /// the pruning error of those values (at most about `drop_below`), so a
+  /// caller checking the choice of `drop_below` checks it on the extended
+  /// rows too.
+  /// \pre as `solve()`.
+  Solve_statistics solve_extendable(const std::vector<Rhs_entry>& entries, int width,
+                                    const int* rows, std::size_t row_count, double* out,
+                                    Workspace& ws, double drop_below = 0) const {
+    check_drop_below(drop_below);
+    return solve_and_keep(entries, width, rows, row_count, out, ws, drop_below);
+  }
+
+  /// The solution of the last `solve_extendable()` on `ws` at `rows` (which
+  /// may repeat rows returned before), written as `solve()` writes it: the
+  /// same numbers as a full solve. Only the back substitution of the
+  /// supernodes the new rows need beyond those already solved is done.
+  /// \pre `ws` holds an extendable solve (else std::logic_error).
+  Solve_statistics extend(const int* rows, std::size_t row_count, double* out,
+                          Workspace& ws) const {
+    if (ws.m_open_width == 0)
+      throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
+    return timed([&] {
+      return Supernode_kernels::with_width(ws.m_open_width, [&](auto width) {
+        return extend_block<decltype(width)::value>(rows, row_count, out, ws);
+      });
+    });
+  }
+
+  /// Ends an extendable solve: the workspace is ready for any solve (which
+  /// would release it too).
+  void release(Workspace& ws) const {
+    if (ws.m_open_width == 0) return;
+    Supernode_kernels::with_width(ws.m_open_width,
+                                  [&](auto width) { clear_block<decltype(width)::value>(ws); });
+    ws.m_open_width = 0;
+    ws.m_largest_open = false;
   }
 
   /// Smallest |value| among `count` values (infinity if there are none): the
@@ -345,7 +244,7 @@ class Localized_cholesky_solver {
   /// either, and is not visited. The caller vouches for the matrix: this
   /// is not checked here.
   ///
-  /// With `drop_below` > 0 both substitutions are pruned as `solve_pruned()`
+  /// With `drop_below` > 0 both substitutions are pruned as `solve()`
   /// prunes them: pruning only lowers the values of a nonnegative inverse,
   /// by about `drop_below` at most, so the bounds and the order of the
   /// values are those of a full solve but for ties within that.
@@ -354,7 +253,7 @@ class Localized_cholesky_solver {
   Solve_statistics solve_largest(const std::vector<Rhs_entry>& entries, std::size_t count,
                                  std::vector<int>& rows, std::vector<double>& values,
                                  Workspace& ws, double drop_below = 0) const {
-    return solve_largest_until(entries, Largest_stop{count, 0.0}, rows, values, ws, drop_below);
+    return solve_largest_until(entries, Stop{count, 0.0}, rows, values, ws, drop_below);
   }
 
   /// As `solve_largest()`, but for every value at least `threshold` (> 0)
@@ -367,8 +266,8 @@ class Localized_cholesky_solver {
                                   std::vector<int>& rows, std::vector<double>& values,
                                   Workspace& ws, double drop_below = 0) const {
     check_threshold(threshold);
-    return solve_largest_until(entries, Largest_stop{no_count, threshold}, rows, values, ws,
-                               drop_below);
+    return solve_largest_until(entries, Stop{Largest_first_frontier::no_count, threshold}, rows,
+                               values, ws, drop_below);
   }
 
   /// Continues the last `solve_largest()` or `solve_at_least()` on `ws`
@@ -377,7 +276,8 @@ class Localized_cholesky_solver {
   Solve_statistics extend_at_least(double threshold, std::vector<int>& rows,
                                    std::vector<double>& values, Workspace& ws) const {
     check_threshold(threshold);
-    return extend_largest_until(Largest_stop{no_count, threshold}, rows, values, ws);
+    return extend_largest_until(Stop{Largest_first_frontier::no_count, threshold}, rows, values,
+                                ws);
   }
 
   /// Continues the last `solve_largest()` on `ws` until the `count` largest
@@ -386,17 +286,11 @@ class Localized_cholesky_solver {
   /// \pre `ws` holds an open `solve_largest()` (else std::logic_error).
   Solve_statistics extend_largest(std::size_t count, std::vector<int>& rows,
                                   std::vector<double>& values, Workspace& ws) const {
-    return extend_largest_until(Largest_stop{count, 0.0}, rows, values, ws);
+    return extend_largest_until(Stop{count, 0.0}, rows, values, ws);
   }
 
  private:
-  // Where a largest-first search may stop: once `count` values exceed every
-  // bound left, or once every bound left is below `threshold` (0: never).
-  struct Largest_stop {
-    std::size_t count;
-    double threshold;
-  };
-  static constexpr std::size_t no_count = std::numeric_limits<std::size_t>::max();
+  using Stop = Largest_first_frontier::Stop;
 
   static void check_threshold(double threshold) {
     if (!(threshold > 0) || !std::isfinite(threshold))
@@ -404,7 +298,7 @@ class Localized_cholesky_solver {
           "Localized_cholesky_solver: the threshold must be positive and finite");
   }
 
-  Solve_statistics solve_largest_until(const std::vector<Rhs_entry>& entries, Largest_stop stop,
+  Solve_statistics solve_largest_until(const std::vector<Rhs_entry>& entries, Stop stop,
                                        std::vector<int>& rows, std::vector<double>& values,
                                        Workspace& ws, double drop_below) const {
     check_drop_below(drop_below);
@@ -412,131 +306,92 @@ class Localized_cholesky_solver {
       if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
         throw std::invalid_argument(
             "Localized_cholesky_solver: solve_largest needs one nonnegative column");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    const std::uint32_t s = ws.next_stamp();
-    double* y = ws.m_block;
-    for (const Rhs_entry& e : entries)
-      y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
-    ws.m_largest_drop_below = drop_below;
-    Solve_statistics stats =
-        forward_substitution<1>(entries, ws, s, Pruning{drop_below > 0, drop_below});
-    ws.m_backward_nodes.clear();
-    ws.m_frontier.clear();
-    for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
-      if (m_factor.supernode[k].parent == -1)
-        ws.m_frontier.push_back({std::numeric_limits<double>::infinity(), k});
-    ws.m_open_width = 1;
-    ws.m_open_columns = 1;
-    ws.m_largest_open = true;
-    if (ws.m_bucket_count.size() != value_buckets) {
-      ws.m_bucket_count.assign(value_buckets, 0);
-      ws.m_buckets_touched_to = 0;
-    }
-    std::fill(ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(ws.m_buckets_touched_from),
-              ws.m_bucket_count.begin() + static_cast<std::ptrdiff_t>(
-                  std::max(ws.m_buckets_touched_from, ws.m_buckets_touched_to)),
-              0u);
-    ws.m_buckets_touched_from = value_buckets;
-    ws.m_buckets_touched_to = 0;
-    ws.m_bucket_floor = value_buckets;
-    ws.m_values_above = 0;
-    rows.clear();
-    values.clear();
-    stats += largest_first(stop, rows, values, ws);
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+    return timed([&] {
+      prepare(ws);
+      const std::uint32_t s = ws.next_stamp();
+      double* y = ws.m_block;
+      for (const Rhs_entry& e : entries)
+        y[static_cast<std::size_t>(m_factor.inverse_permutation[e.row])] += e.value;
+      ws.m_largest_drop_below = drop_below;
+      Solve_statistics stats = forward_substitution<1>(entries, ws, s, drop_below);
+      ws.m_backward_nodes.clear();
+      ws.m_frontier.clear();
+      for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
+        if (m_factor.supernode[k].parent == -1)
+          ws.m_frontier.push(std::numeric_limits<double>::infinity(), k);
+      ws.m_open_width = 1;
+      ws.m_open_columns = 1;
+      ws.m_largest_open = true;
+      rows.clear();
+      values.clear();
+      return stats += largest_first(stop, rows, values, ws);
+    });
   }
 
-  Solve_statistics extend_largest_until(Largest_stop stop, std::vector<int>& rows,
+  Solve_statistics extend_largest_until(Stop stop, std::vector<int>& rows,
                                         std::vector<double>& values, Workspace& ws) const {
     if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
         ws.m_largest_values != rows.size())
       throw std::logic_error(
           "Localized_cholesky_solver: extend_largest() or extend_at_least() without an open "
           "solve_largest() or solve_at_least()");
+    return timed([&] { return largest_first(stop, rows, values, ws); });
+  }
+
+  // The statistics of solve(), their time measured.
+  template <class Solve>
+  static Solve_statistics timed(Solve solve) {
     const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = largest_first(stop, rows, values, ws);
+    Solve_statistics stats = solve();
     stats.solve_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
   }
-
-  // Whether and below what magnitude a solve stops propagating entries.
-  struct Pruning {
-    bool enabled = false;
-    double drop_below = 0;
-  };
 
   static void check_drop_below(double drop_below) {
     if (!(drop_below >= 0) || !std::isfinite(drop_below))
       throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
   }
 
-  // solve_extendable and solve_extendable_pruned: one block, kept in `ws`.
+  // solve_extendable: one block, kept in `ws`. Pruned if drop_below > 0,
+  // as are the others below.
   Solve_statistics solve_and_keep(const std::vector<Rhs_entry>& entries, int width,
                                   const int* rows, std::size_t row_count, double* out,
-                                  Workspace& ws, Pruning pruning) const {
-    if (width < 1 || width > max_block_width)
-      throw std::invalid_argument("Localized_cholesky_solver: extendable width out of range");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    Solve_statistics stats = dispatch(entries, width, rows, row_count, out, ws, pruning, /*keep=*/true);
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+                                  Workspace& ws, double drop_below) const {
+    if (width < 1 || width > ws.max_width())
+      throw std::invalid_argument(
+          "Localized_cholesky_solver: an extendable solve's width must be from 1 to its "
+          "workspace's max_width()");
+    return timed([&] {
+      prepare(ws);
+      return dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
+    });
   }
 
   Solve_statistics solve_in_blocks(const std::vector<Rhs_entry>& entries, int width,
                                    const int* rows, std::size_t row_count, double* out,
-                                   Workspace& ws, Pruning pruning) const {
+                                   Workspace& ws, double drop_below) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
-    const auto start = std::chrono::steady_clock::now();
-    prepare(ws);
-    Solve_statistics total;
-    std::vector<Rhs_entry> chunk;
-    std::vector<double> chunk_out;
-    for (int first = 0; first < width; first += max_block_width) {
-      const int w = std::min(max_block_width, width - first);
-      const std::vector<Rhs_entry>* part = &entries;
-      if (width > max_block_width) {
+    return timed([&] {
+      prepare(ws);
+      const int block = ws.max_width();
+      if (width <= block) return dispatch(entries, width, rows, row_count, out, ws, drop_below);
+      Solve_statistics total;
+      std::vector<Rhs_entry> chunk;
+      std::vector<double> chunk_out;
+      for (int first = 0; first < width; first += block) {
+        const int w = std::min(block, width - first);
         chunk.clear();
         for (const Rhs_entry& e : entries)
           if (e.column >= first && e.column < first + w)
             chunk.push_back({e.row, e.column - first, e.value});
-        part = &chunk;
-      }
-      double* target = out;
-      if (width > max_block_width) {
         chunk_out.assign(row_count * static_cast<std::size_t>(w), 0.0);
-        target = chunk_out.data();
-      }
-      const Solve_statistics s = dispatch(*part, w, rows, row_count, target, ws, pruning);
-      total += s;
-      if (width > max_block_width)
+        total += dispatch(chunk, w, rows, row_count, chunk_out.data(), ws, drop_below);
         for (std::size_t i = 0; i < row_count; ++i)
-          for (int c = 0; c < w; ++c)
-            out[i * width + first + c] = chunk_out[i * w + c];
-    }
-    total.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return total;
-  }
-
-  // Calls f(std::integral_constant<int, W>) with the kernel width W of the
-  // extendable solve left in `ws` (one of those `dispatch` chooses).
-  template <class F>
-  static std::invoke_result_t<F, std::integral_constant<int, 1>> with_open_width(
-      const Workspace& ws, F f) {
-    switch (ws.m_open_width) {
-      case 1: return f(std::integral_constant<int, 1>{});
-      case 2: return f(std::integral_constant<int, 2>{});
-      case 4: return f(std::integral_constant<int, 4>{});
-      case 8: return f(std::integral_constant<int, 8>{});
-      case 12: return f(std::integral_constant<int, 12>{});
-      default: return f(std::integral_constant<int, 16>{});
-    }
+          for (int c = 0; c < w; ++c) out[i * width + first + c] = chunk_out[i * w + c];
+      }
+      return total;
+    });
   }
 
   // A workspace of the right size with a zero block (an extendable solve
@@ -550,154 +405,60 @@ class Localized_cholesky_solver {
 
   Solve_statistics dispatch(const std::vector<Rhs_entry>& entries, int width, const int* rows,
                             std::size_t row_count, double* out, Workspace& ws,
-                            Pruning pruning, bool keep = false) const {
-    if (width == 1) return solve_block<1>(entries, rows, row_count, out, ws, pruning, keep);
-    // Two columns: the star solve of an angle estimator linear in the heat.
-    if (width == 2) return solve_block<2>(entries, rows, row_count, out, ws, pruning, keep);
-    if (width <= 4) return solve_block<4>(entries, rows, row_count, out, ws, pruning, keep, width);
-    if (width <= 8) return solve_block<8>(entries, rows, row_count, out, ws, pruning, keep, width);
-    if (width <= 12)
-      return solve_block<12>(entries, rows, row_count, out, ws, pruning, keep, width);
-    return solve_block<16>(entries, rows, row_count, out, ws, pruning, keep, width);
-  }
-
-  // Builds a topological order (descendants before ancestors) of the
-  // supernodes on the tree paths from the pivots of `begin..end` to the
-  // root: each new path goes in front of the paths found before it, whose
-  // nodes it can only precede. Also records, per supernode, the first of its
-  // columns a path enters at: the columns before it are not needed (zero in
-  // forward substitution, unused in back substitution).
-  template <class Start, class StartToPivot>
-  void reach(const Start* begin, const Start* end, StartToPivot to_pivot,
-             std::vector<std::uint32_t>& stamp, std::vector<int>& entry, std::uint32_t s,
-             std::vector<int>& order, std::vector<int>& path) const {
-    const auto& F = m_factor;
-    order.clear();
-    for (const Start* start = begin; start != end; ++start) {
-      path.clear();
-      int column = to_pivot(*start);
-      int k = F.supernode_of_column[column];
-      while (true) {
-        const int offset = column - F.supernode[k].first_column;
-        if (stamp[k] == s) {  // known: only its entry may move down
-          entry[k] = std::min(entry[k], offset);
-          break;
-        }
-        stamp[k] = s;
-        entry[k] = offset;
-        path.push_back(k);
-        const auto& sn = F.supernode[k];
-        if (sn.parent == -1) break;
-        column = F.row_index[sn.below_rows];  // the parent of the last column
-        k = sn.parent;
-      }
-      order.insert(order.end(), path.rbegin(), path.rend());
-    }
-    std::reverse(order.begin(), order.end());
+                            double drop_below, bool keep = false) const {
+    return Supernode_kernels::with_width(Supernode_kernels::width_for(width), [&](auto kernel) {
+      return solve_block<decltype(kernel)::value>(entries, rows, row_count, out, ws, drop_below,
+                                                  keep, width);
+    });
   }
 
   // Forward: L y = b over the ancestors of the nonzeros of b (scattered
   // into the block already); finds them first, stamped `s`.
   template <int W>
   Solve_statistics forward_substitution(const std::vector<Rhs_entry>& entries, Workspace& ws,
-                                        std::uint32_t s, Pruning pruning) const {
+                                        std::uint32_t s, double drop_below) const {
     const auto& F = m_factor;
-    double* y = ws.m_block;
+    Supernode_kernels kernels = kernels_in(ws);
     Solve_statistics stats;
-    reach(entries.data(), entries.data() + entries.size(),
-          [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; }, ws.m_forward_stamp,
-          ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
+    supernode_reach(F, entries.data(), entries.data() + entries.size(),
+                    [&F](const Rhs_entry& e) { return F.inverse_permutation[e.row]; },
+                    ws.m_forward_stamp, ws.m_forward_entry, s, ws.m_forward_nodes, ws.m_path);
     for (const int k : ws.m_forward_nodes) {
       const auto& sn = F.supernode[k];
       const int first = ws.m_forward_entry[k];
-      double* ys = y + static_cast<std::size_t>(sn.first_column) * W;
       stats.forward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (pruning.enabled) {
-        stats.factor_entries +=
-            with_entries(sn, [&](const auto* entries) {
-              return forward_supernode_pruned<W>(entries, sn, first, ys, y, pruning.drop_below,
-                                                 ws.m_kept);
-            });
-        continue;
-      }
-      with_entries(sn, [&](const auto* entries) { forward_supernode<W>(entries, sn, first, ys, y); });
-      stats.factor_entries += entries_of(sn, first);
+      stats.factor_entries += kernels.forward<W>(sn, first, ws.m_block, drop_below);
     }
     return stats;
-  }
-
-  // The bucket of a value for counting the values above a bound: its
-  // exponent and three leading mantissa bits (nonpositive values in 0), so
-  // larger values have higher (or equal) buckets.
-  static constexpr std::size_t value_buckets = std::size_t{1} << 14;
-  static std::size_t value_bucket(double value) {
-    if (!(value > 0)) return 0;
-    std::uint64_t bits;
-    std::memcpy(&bits, &value, sizeof bits);
-    return static_cast<std::size_t>(bits >> 49);
   }
 
   // The back substitution of solve_largest and solve_at_least: pops the
   // frontier's supernode with the largest bound (the largest solved value
   // among its rows below; infinity on the right-hand side's paths, where the
-  // bound does not hold) until `stop` is met (the `count`-th largest value
-  // solved exceeds every bound left, or every bound left is below the
-  // threshold), solving each popped supernode in whole and pushing its
-  // children.
-  Solve_statistics largest_first(Largest_stop stop, std::vector<int>& rows,
-                                 std::vector<double>& values, Workspace& ws) const {
-    const std::size_t count = stop.count;
+  // bound does not hold) until `stop` is met, solving each popped supernode
+  // in whole and pushing its children.
+  Solve_statistics largest_first(Stop stop, std::vector<int>& rows, std::vector<double>& values,
+                                 Workspace& ws) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     const std::uint32_t s = ws.m_stamp;
-    auto& frontier = ws.m_frontier;
     Solve_statistics stats;
-    // Settled once every bound left is below the threshold, or once `count`
-    // values exceed every bound left. The values are
-    // counted in buckets of an eighth of a binade and a value counts as
-    // exceeding a bound only if its bucket is higher, so the search may go
-    // on up to a bucket longer than it must, never shorter; with it, no
-    // selection over the values is needed. Bounds only fall from pop to pop
-    // (a child's rows below are its parent's rows or rows below), so the
-    // count above the bounds only grows.
-    auto settled = [&](double bound) {
-      if (count == 0 || bound < stop.threshold) return true;
-      if (!(bound < std::numeric_limits<double>::infinity())) return false;
-      for (const std::size_t b = value_bucket(bound) + 1; ws.m_bucket_floor > b;)
-        ws.m_values_above += ws.m_bucket_count[--ws.m_bucket_floor];
-      return ws.m_values_above >= count;
-    };
-    while (!frontier.empty() && !settled(frontier.front().first)) {
-      std::pop_heap(frontier.begin(), frontier.end());
-      const int k = frontier.back().second;
-      frontier.pop_back();
+    for (int k; (k = ws.m_frontier.pop(stop)) != -1;) {
       const auto& sn = F.supernode[k];
       double* ys = y + static_cast<std::size_t>(sn.first_column);
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
-      if (ws.m_largest_drop_below > 0) {
-        stats.factor_entries +=
-            with_entries(sn, [&](const auto* entries) {
-              return backward_supernode_pruned<1>(entries, sn, 0, ys, y, ws.m_largest_drop_below,
-                                                  ws.m_kept);
-            });
-      } else {
-        with_entries(sn, [&](const auto* entries) { backward_supernode<1>(entries, sn, 0, ys, y); });
-        stats.factor_entries += entries_of(sn, 0);
-      }
+      stats.factor_entries += kernels.backward<1>(sn, 0, y, ws.m_largest_drop_below);
       ws.m_backward_stamp[k] = s;
       ws.m_backward_entry[k] = 0;
       ws.m_backward_nodes.push_back(k);
       for (int c = 0; c < sn.ncol; ++c) {
         rows.push_back(F.permutation[sn.first_column + c]);
         values.push_back(ys[c]);
-        const std::size_t b = value_bucket(ys[c]);
-        ++ws.m_bucket_count[b];
-        ws.m_buckets_touched_from = std::min(ws.m_buckets_touched_from, b);
-        ws.m_buckets_touched_to = std::max(ws.m_buckets_touched_to, b + 1);
-        if (b >= ws.m_bucket_floor) ++ws.m_values_above;
+        ws.m_frontier.count(ys[c]);
       }
-      for (int q = m_child_start[k]; q < m_child_start[k + 1]; ++q) {
-        const int child = m_child[q];
+      for (const int* c = m_tree.children_begin(k); c != m_tree.children_end(k); ++c) {
+        const int child = *c;
         double bound = std::numeric_limits<double>::infinity();
         if (ws.m_forward_stamp[child] != s) {
           const auto& cn = F.supernode[child];
@@ -705,8 +466,7 @@ class Localized_cholesky_solver {
           bound = -std::numeric_limits<double>::infinity();
           for (int t = 0; t < cn.nbelow; ++t) bound = std::max(bound, y[below[t]]);
         }
-        frontier.push_back({bound, child});
-        std::push_heap(frontier.begin(), frontier.end());
+        ws.m_frontier.push(bound, child);
       }
     }
     ws.m_largest_values = values.size();
@@ -716,34 +476,26 @@ class Localized_cholesky_solver {
   template <int W>
   Solve_statistics solve_block(const std::vector<Rhs_entry>& entries, const int* rows,
                                std::size_t row_count, double* out, Workspace& ws,
-                               Pruning pruning, bool keep, int width = W) const {
+                               double drop_below, bool keep, int width = W) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;  // row-major n x W by pivot, zero on entry and exit
     auto row_of = [y](int pivot) { return y + static_cast<std::size_t>(pivot) * W; };
 
     // Scatter b (permuted) into the block, then forward.
     const std::uint32_t s = ws.next_stamp();
     for (const Rhs_entry& e : entries) row_of(F.inverse_permutation[e.row])[e.column] += e.value;
-    Solve_statistics stats = forward_substitution<W>(entries, ws, s, pruning);
+    Solve_statistics stats = forward_substitution<W>(entries, ws, s, drop_below);
 
     // Backward: L^T x = y over the ancestors of the requested rows, in place.
-    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
-          ws.m_backward_stamp, ws.m_backward_entry, s, ws.m_backward_nodes, ws.m_path);
+    supernode_reach(F, rows, rows + row_count,
+                    [&F](int row) { return F.inverse_permutation[row]; }, ws.m_backward_stamp,
+                    ws.m_backward_entry, s, ws.m_backward_nodes, ws.m_path);
     for (auto it = ws.m_backward_nodes.rbegin(); it != ws.m_backward_nodes.rend(); ++it) {
       const auto& sn = F.supernode[*it];
       const int first = ws.m_backward_entry[*it];
       stats.backward_nodes += static_cast<std::size_t>(sn.ncol - first);
-      if (pruning.enabled) {
-        stats.factor_entries += with_entries(sn, [&](const auto* entries) {
-          return backward_supernode_pruned<W>(entries, sn, first, row_of(sn.first_column), y,
-                                              pruning.drop_below, ws.m_kept);
-        });
-        continue;
-      }
-      with_entries(sn, [&](const auto* entries) {
-        backward_supernode<W>(entries, sn, first, row_of(sn.first_column), y);
-      });
-      stats.factor_entries += entries_of(sn, first);
+      stats.factor_entries += kernels.backward<W>(sn, first, y, drop_below);
     }
 
     read_rows<W>(rows, row_count, out, ws, width);
@@ -761,7 +513,8 @@ class Localized_cholesky_solver {
   void read_rows(const int* rows, std::size_t row_count, double* out, const Workspace& ws,
                  int width = W) const {
     for (std::size_t i = 0; i < row_count; ++i) {
-      const double* x = ws.m_block + static_cast<std::size_t>(m_factor.inverse_permutation[rows[i]]) * W;
+      const std::size_t pivot = static_cast<std::size_t>(m_factor.inverse_permutation[rows[i]]);
+      const double* x = ws.m_block + pivot * W;
       for (int c = 0; c < width; ++c) out[i * width + c] = x[c];
     }
   }
@@ -787,21 +540,18 @@ class Localized_cholesky_solver {
   Solve_statistics extend_block(const int* rows, std::size_t row_count, double* out,
                                 Workspace& ws) const {
     const auto& F = m_factor;
+    Supernode_kernels kernels = kernels_in(ws);
     double* y = ws.m_block;
     Solve_statistics stats;
     ws.m_previous_entry.resize(ws.m_backward_nodes.size());
     for (std::size_t i = 0; i < ws.m_backward_nodes.size(); ++i)
       ws.m_previous_entry[i] = ws.m_backward_entry[ws.m_backward_nodes[i]];
-    reach(rows, rows + row_count, [&F](int row) { return F.inverse_permutation[row]; },
-          ws.m_backward_stamp, ws.m_backward_entry, ws.m_stamp, ws.m_extension_nodes, ws.m_path);
+    supernode_reach(F, rows, rows + row_count,
+                    [&F](int row) { return F.inverse_permutation[row]; }, ws.m_backward_stamp,
+                    ws.m_backward_entry, ws.m_stamp, ws.m_extension_nodes, ws.m_path);
     auto solve_columns = [&](int k, int first, int end) {
-      const auto& sn = F.supernode[k];
       stats.backward_nodes += static_cast<std::size_t>(end - first);
-      with_entries(sn, [&](const auto* entries) {
-        backward_supernode<W>(entries, sn, first,
-                              y + static_cast<std::size_t>(sn.first_column) * W, y, end);
-      });
-      stats.factor_entries += entries_of(sn, first, end);
+      stats.factor_entries += kernels.backward<W>(F.supernode[k], first, y, 0, end);
     };
     for (std::size_t i = ws.m_backward_nodes.size(); i-- > 0;) {
       const int k = ws.m_backward_nodes[i];
@@ -818,393 +568,14 @@ class Localized_cholesky_solver {
     return stats;
   }
 
-  // Calls f with the entries array of supernode `sn` in its precision.
-  template <class F>
-  auto with_entries(const Supernodal_factor::Supernode& sn, F&& f) const
-      -> decltype(f(std::declval<const double*>())) {
-    return m_factor.with_entries(sn, std::forward<F>(f));
-  }
-
-  // out[j * W + w] -= sum over t < nbelow of l[t * stride + j] * y[rows[t] * W + w]
-  // for the C columns j of a supernode's rows below (row-major, `stride`
-  // columns per row): part of the back substitution.
-  template <int W, int C, class T>
-  static void subtract_below(const T* l, int stride, const int* rows, int nbelow,
-                             const double* y, double* out) {
-    std::array<std::array<double, W>, C> acc{};
-    for (int t = 0; t < nbelow; ++t) {
-      const T* lt = l + static_cast<std::size_t>(t) * stride;
-      const double* xt = y + static_cast<std::size_t>(rows[t]) * W;
-      for (int j = 0; j < C; ++j)
-        for (int w = 0; w < W; ++w) acc[j][w] += lt[j] * xt[w];
-    }
-    for (int j = 0; j < C; ++j)
-      for (int w = 0; w < W; ++w) out[j * W + w] -= acc[j][w];
-  }
-
-  // Forward substitution through one supernode from its column `first` on
-  // (the earlier ones are zero): the diagonal block row by row (a row of the
-  // row-major block is contiguous), then the rows below it, each one dot
-  // product. `ys` are the supernode's own rows of the block `y`.
-  template <int W, class T>
-  void forward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                         double* ys, double* y) const {
-    const auto& F = m_factor;
-    const T* diagonal = entries + sn.diagonal;
-    for (int r = first; r < sn.ncol; ++r) {
-      double* yr = ys + r * W;
-      subtract_dot<W>(diagonal + Supernodal_factor::triangle_row(r), ys, first, r, yr);
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-    }
-    const T* below = entries + sn.below;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0) {
-      const int run[2] = {first, sn.ncol};
-      return low_rank_forward<W>(below, sn, run, 2, ys, below_rows, y);
-    }
-    for (int t = 0; t < sn.nbelow; ++t)
-      subtract_dot<W>(below + static_cast<std::size_t>(t) * sn.ncol, ys, first, sn.ncol,
-                      y + static_cast<std::size_t>(below_rows[t]) * W);
-  }
-
-  // The forward update of the rows below kept as U V^T (rank r): y[rows[t]]
-  // -= U[t] (V^T ys), the columns of V^T taken from the [begin, end) pairs
-  // of `runs` (the columns propagated).
-  template <int W, class T>
-  static void low_rank_forward(const T* below, const Supernodal_factor::Supernode& sn,
-                               const int* runs, std::size_t run_values, const double* ys,
-                               const int* below_rows, double* y) {
-    const int r = sn.rank;
-    const T* U = below;
-    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
-    for (std::size_t q = 0; q < run_values; q += 2)
-      for (int c = runs[q]; c < runs[q + 1]; ++c) {
-        const T* v = V + static_cast<std::size_t>(c) * r;
-        const double* yc = ys + static_cast<std::size_t>(c) * W;
-        for (int j = 0; j < r; ++j)
-          for (int w = 0; w < W; ++w) z[j * W + w] += v[j] * yc[w];
-      }
-    for (int t = 0; t < sn.nbelow; ++t)
-      subtract_dot<W>(U + static_cast<std::size_t>(t) * r, z, 0, r,
-                      y + static_cast<std::size_t>(below_rows[t]) * W);
-  }
-
-  // The backward update from the rows below kept as U V^T: ys[c] -= V[c]
-  // (U^T x) for the columns c in [first, end), over the rows below
-  // `row(0)`, ..., `row(count - 1)` (the others taken as zero).
-  template <int W, class T, class Row>
-  static void low_rank_backward(const T* below, const Supernodal_factor::Supernode& sn,
-                                int first, int end, double* ys, const double* y,
-                                const int* below_rows, int count, Row row) {
-    const int r = sn.rank;
-    const T* U = below;
-    const T* V = below + static_cast<std::size_t>(sn.nbelow) * r;
-    double* z = zeroed_scratch(static_cast<std::size_t>(r) * W);
-    for (int i = 0; i < count; ++i) {
-      const int t = row(i);
-      const T* u = U + static_cast<std::size_t>(t) * r;
-      const double* x = y + static_cast<std::size_t>(below_rows[t]) * W;
-      for (int j = 0; j < r; ++j)
-        for (int w = 0; w < W; ++w) z[j * W + w] += u[j] * x[w];
-    }
-    for (int c = first; c < end; ++c)
-      subtract_dot<W>(V + static_cast<std::size_t>(c) * r, z, 0, r,
-                      ys + static_cast<std::size_t>(c) * W);
-  }
-
-  // Back substitution through one supernode, for its columns from `first`
-  // to `end` (all the rest by default; the columns from `end` on are solved
-  // already): the rows below it (already solved: they belong to ancestors)
-  // are subtracted, then the diagonal block is solved bottom-up, each solved
-  // row subtracted from the rows above it (row-contiguous in the row-major
-  // block).
-  template <int W, class T>
-  void backward_supernode(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                          double* ys, const double* y, int end = -1) const {
-    if (end < 0) end = sn.ncol;
-    backward_below<W>(entries, sn, first, ys, y, end);
-    const T* diagonal = entries + sn.diagonal;
-    for (int r = sn.ncol - 1; r >= end; --r) {  // solved rows, subtracted from the new ones
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < end; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * ys[r * W + w];
-    }
-    // Four rows at a time: their own 4 x 4 triangle first, then the rows
-    // above them updated by all four in one pass (each row of ys read and
-    // written once per four rows of L instead of once per row).
-    int r = end - 1;
-    for (; r - 3 >= first; r -= 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      for (int k = 0; k < 4; ++k) {
-        const int row = r - k;
-        l[k] = diagonal + Supernodal_factor::triangle_row(row);
-        double* yr = ys + row * W;
-        const double inverse = m_inverse_diagonal[sn.first_column + row];
-        for (int w = 0; w < W; ++w) x[k][w] = yr[w] *= inverse;
-        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
-          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
-      }
-      subtract_four_rows<W>(l, x, first, r - 3, ys);
-    }
-    for (; r >= first; --r) {
-      double* yr = ys + r * W;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      std::array<double, W> xr;
-      for (int w = 0; w < W; ++w) xr[w] = yr[w] *= inverse;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < r; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * xr[w];
-    }
-  }
-
-  // Whether a row of the block is propagated by a pruned solve.
-  template <int W>
-  static bool above(const double* row, double drop_below) {
-    for (int w = 0; w < W; ++w)
-      if (std::abs(row[w]) > drop_below) return true;
-    return false;
-  }
-
-  // forward_supernode for a pruned solve: only the columns whose solved
-  // rows are above `drop_below` are propagated, to the later rows of the
-  // diagonal block and to the rows below. They are kept in `runs` as
-  // [begin, end) pairs (flattened): in a separator the columns near the
-  // right-hand side tend to be consecutive, so a dot product over a run is
-  // as contiguous as the unpruned one. Returns the factor entries read.
-  template <int W, class T>
-  std::size_t forward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
-                                       int first, double* ys, double* y, double drop_below,
-                                       std::vector<int>& runs) const {
-    const auto& F = m_factor;
-    const T* diagonal = entries + sn.diagonal;
-    runs.clear();
-    std::size_t kept = 0, read = 0;
-    for (int r = first; r < sn.ncol; ++r) {
-      double* yr = ys + r * W;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (std::size_t q = 0; q < runs.size(); q += 2)
-        subtract_dot<W>(l, ys, runs[q], runs[q + 1], yr);
-      read += kept + 1;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-      if (!above<W>(yr, drop_below)) continue;
-      ++kept;
-      if (!runs.empty() && runs.back() == r)
-        runs.back() = r + 1;
-      else
-        runs.insert(runs.end(), {r, r + 1});
-    }
-    if (runs.empty()) return read;
-    const T* below = entries + sn.below;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0) {
-      low_rank_forward<W>(below, sn, runs.data(), runs.size(), ys, below_rows, y);
-      return read + (kept + static_cast<std::size_t>(sn.nbelow)) * static_cast<std::size_t>(sn.rank);
-    }
-    for (int t = 0; t < sn.nbelow; ++t) {
-      const T* l = below + static_cast<std::size_t>(t) * sn.ncol;
-      double* target = y + static_cast<std::size_t>(below_rows[t]) * W;
-      for (std::size_t q = 0; q < runs.size(); q += 2)
-        subtract_dot<W>(l, ys, runs[q], runs[q + 1], target);
-    }
-    return read + kept * static_cast<std::size_t>(sn.nbelow);
-  }
-
-  // backward_supernode for a pruned solve: only the rows below (solved
-  // ancestors) and the rows of the diagonal block whose solutions are above
-  // `drop_below` are subtracted. Both go four rows of L at a time, as in the
-  // full kernel (each row of ys read and written once per four rows of L):
-  // the kept rows below in groups of four, the diagonal block in its groups
-  // of four rows with the solutions at or below the threshold propagated as
-  // zeros, and a group skipped when all four are. `kept` receives the rows
-  // below that are kept. Returns the factor entries read.
-  template <int W, class T>
-  std::size_t backward_supernode_pruned(const T* entries, const Supernodal_factor::Supernode& sn,
-                                        int first, double* ys, const double* y,
-                                        double drop_below, std::vector<int>& kept) const {
-    const auto& F = m_factor;
-    const int* below_rows = F.row_index.data() + sn.below_rows;
-    kept.clear();
-    for (int t = 0; t < sn.nbelow; ++t)
-      if (above<W>(y + static_cast<std::size_t>(below_rows[t]) * W, drop_below)) kept.push_back(t);
-    const std::size_t width = static_cast<std::size_t>(sn.ncol - first);
-    std::size_t read = sn.rank >= 0 ? (kept.size() + width) * static_cast<std::size_t>(sn.rank)
-                                    : kept.size() * width;
-    if (sn.rank >= 0) {
-      low_rank_backward<W>(entries + sn.below, sn, first, sn.ncol, ys, y, below_rows,
-                           static_cast<int>(kept.size()),
-                           [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
-    } else if (static_cast<int>(kept.size()) == sn.nbelow) {
-      // Nothing to skip below: the register-blocked kernel of the full solve.
-      backward_below<W>(entries, sn, first, ys, y, sn.ncol);
-    } else {
-      subtract_rows_below<W>(entries, sn, first, ys, y, sn.ncol, static_cast<int>(kept.size()),
-                             [&kept](int i) { return kept[static_cast<std::size_t>(i)]; });
-    }
-    const T* diagonal = entries + sn.diagonal;
-    int r = sn.ncol - 1;
-    for (; r - 3 >= first; r -= 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      bool any = false;
-      for (int k = 0; k < 4; ++k) {
-        const int row = r - k;
-        l[k] = diagonal + Supernodal_factor::triangle_row(row);
-        double* yr = ys + row * W;
-        const double inverse = m_inverse_diagonal[sn.first_column + row];
-        for (int w = 0; w < W; ++w) yr[w] *= inverse;
-        ++read;
-        const bool kept_row = above<W>(yr, drop_below);
-        any = any || kept_row;
-        for (int w = 0; w < W; ++w) x[k][w] = kept_row ? yr[w] : 0.0;
-        if (!kept_row) continue;
-        for (int j = k + 1; j < 4; ++j)  // the rows r - j below row r - k's diagonal
-          for (int w = 0; w < W; ++w) ys[(r - j) * W + w] -= l[k][r - j] * x[k][w];
-        read += static_cast<std::size_t>(3 - k);
-      }
-      if (!any) continue;
-      subtract_four_rows<W>(l, x, first, r - 3, ys);
-      read += 4 * static_cast<std::size_t>(r - 3 - first);
-    }
-    for (; r >= first; --r) {
-      double* yr = ys + r * W;
-      const double inverse = m_inverse_diagonal[sn.first_column + r];
-      for (int w = 0; w < W; ++w) yr[w] *= inverse;
-      ++read;
-      if (!above<W>(yr, drop_below)) continue;
-      const T* l = diagonal + Supernodal_factor::triangle_row(r);
-      for (int a = first; a < r; ++a)
-        for (int w = 0; w < W; ++w) ys[a * W + w] -= l[a] * yr[w];
-      read += static_cast<std::size_t>(r - first);
-    }
-    return read;
-  }
-
-  // The rows below a supernode (solved ancestors) subtracted from its rows
-  // from `first` on. Up to one block of columns: their sums in registers
-  // over all rows below (updating ys in memory once per row below would
-  // chain every update of a column through a store and a load). Wider:
-  // by rows (backward_below_by_rows), since a block at a time walks the
-  // row-major rows below once per block, a few entries from each row.
-  template <int W, class T>
-  void backward_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                      double* ys, const double* y, int end) const {
-    constexpr int block = W == 1 ? 8 : W <= 4 ? 4 : 2;
-    const T* below = entries + sn.below;
-    const int* below_rows = m_factor.row_index.data() + sn.below_rows;
-    if (sn.rank >= 0)
-      return low_rank_backward<W>(below, sn, first, end, ys, y, below_rows, sn.nbelow,
-                                  [](int i) { return i; });
-    if (end - first > block) return backward_below_by_rows<W>(entries, sn, first, ys, y, end);
-    int c = first;
-    for (; c + block <= end; c += block)
-      subtract_below<W, block>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-    // The rest in halving blocks: each pass gathers every solved row below
-    // once, and most supernodes are narrower than a block.
-    if constexpr (block > 4) {
-      if (c + 4 <= end) {
-        subtract_below<W, 4>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-        c += 4;
-      }
-    }
-    if constexpr (block > 2) {
-      if (c + 2 <= end) {
-        subtract_below<W, 2>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-        c += 2;
-      }
-    }
-    for (; c < end; ++c)
-      subtract_below<W, 1>(below + c, sn.ncol, below_rows, sn.nbelow, y, ys + c * W);
-  }
-
-  // backward_below for more columns than a block: the rows below are read
-  // in memory order, four at a time, each group updating the columns'
-  // partial solutions in ys once (ys stays in the first-level cache). Per
-  // solve on a 711k-vertex mesh this read the rows below at about twice the
-  // speed of the blocked kernel (doc/performance.md).
-  template <int W, class T>
-  void backward_below_by_rows(const T* entries, const Supernodal_factor::Supernode& sn,
-                              int first, double* ys, const double* y, int end) const {
-    subtract_rows_below<W>(entries, sn, first, ys, y, end, sn.nbelow, [](int i) { return i; });
-  }
-
-  // The rows below a supernode numbered `row(0)`, ..., `row(count - 1)`
-  // (ascending) subtracted from its columns [first, end), four rows at a
-  // time: backward_below_by_rows takes them all, a pruned back substitution
-  // the kept ones.
-  template <int W, class T, class Row>
-  void subtract_rows_below(const T* entries, const Supernodal_factor::Supernode& sn, int first,
-                           double* ys, const double* y, int end, int count, Row row) const {
-    const T* below = entries + sn.below;
-    const int* below_rows = m_factor.row_index.data() + sn.below_rows;
-    const std::size_t stride = static_cast<std::size_t>(sn.ncol);
-    int i = 0;
-    for (; i + 4 <= count; i += 4) {
-      const T* l[4];
-      std::array<std::array<double, W>, 4> x;
-      for (int k = 0; k < 4; ++k) {
-        const int t = row(i + k);
-        l[k] = below + static_cast<std::size_t>(t) * stride;
-        const double* xk = y + static_cast<std::size_t>(below_rows[t]) * W;
-        for (int w = 0; w < W; ++w) x[k][w] = xk[w];
-      }
-      subtract_four_rows<W>(l, x, first, end, ys);
-    }
-    for (; i < count; ++i) {
-      const int t = row(i);
-      const T* l = below + static_cast<std::size_t>(t) * stride;
-      std::array<double, W> a;
-      for (int w = 0; w < W; ++w) a[w] = y[static_cast<std::size_t>(below_rows[t]) * W + w];
-      for (int c = first; c < end; ++c)
-        for (int w = 0; w < W; ++w) ys[c * W + w] -= l[c] * a[w];
-    }
-  }
-
-  // Entries of the supernode's columns from `first` on (to `end`) that a
-  // solve reads: rows below in low-rank form are r per row and column.
-  std::size_t entries_of(const Supernodal_factor::Supernode& sn, int first,
-                                int end = -1) const {
-    if (end < 0) end = sn.ncol;
-    const std::size_t c = static_cast<std::size_t>(end - first);
-    const std::size_t diagonal = c * (c + 1) / 2 + static_cast<std::size_t>(sn.ncol - end) * c;
-    const std::size_t nbelow = static_cast<std::size_t>(sn.nbelow);
-    if (sn.rank >= 0) return diagonal + (nbelow + c) * static_cast<std::size_t>(sn.rank);
-    return diagonal + nbelow * c;
-  }
-
-  void compute_tree_height() {
-    // Parents come after their children, so one descending sweep gives every
-    // supernode the number of columns on its path to the root.
-    const auto& sns = m_factor.supernode;
-    std::vector<int> depth(sns.size(), 0);
-    m_tree_height = 0;
-    for (std::size_t k = sns.size(); k-- > 0;) {
-      depth[k] = sns[k].ncol + (sns[k].parent == -1 ? 0 : depth[sns[k].parent]);
-      m_tree_height = std::max(m_tree_height, depth[k]);
-    }
-  }
-
-  // The children of every supernode, compressed: those of k are
-  // m_child[m_child_start[k] .. m_child_start[k + 1]).
-  void compute_children() {
-    const auto& sns = m_factor.supernode;
-    m_child_start.assign(sns.size() + 1, 0);
-    for (const auto& sn : sns)
-      if (sn.parent != -1) ++m_child_start[static_cast<std::size_t>(sn.parent) + 1];
-    for (std::size_t k = 0; k < sns.size(); ++k) m_child_start[k + 1] += m_child_start[k];
-    m_child.resize(static_cast<std::size_t>(m_child_start.back()));
-    std::vector<int> next(m_child_start.begin(), m_child_start.end() - 1);
-    for (std::size_t k = 0; k < sns.size(); ++k)
-      if (sns[k].parent != -1) m_child[static_cast<std::size_t>(next[sns[k].parent]++)] = static_cast<int>(k);
+  // The kernels of this factor, working in `ws`.
+  Supernode_kernels kernels_in(Workspace& ws) const {
+    return Supernode_kernels(m_factor, m_inverse_diagonal.data(), ws.m_kernel_scratch);
   }
 
   Supernodal_factor m_factor;
+  Supernode_tree m_tree;
   std::vector<double> m_inverse_diagonal;  // 1 / L(j, j)
-  std::vector<int> m_child_start, m_child;
-  int m_tree_height = 0;
   std::size_t m_compressed_supernodes = 0;
 };
 

@@ -12,7 +12,7 @@
 namespace expmap {
 namespace internal {
 
-/// Step 2 of the heat method (Crane et al. 2013) on one face, prepared once
+/// Step 3 of a heat query (manual, section 2; Crane et al. 2013) on one face, prepared once
 /// per face: the unit vector field X = grad u / |grad u| of the piecewise
 /// linear heat u (eq. 6 and 7 of the paper), and its integrated divergence at
 /// the three corners, div_a = 1/2 (cot c (X . e_ab) + cot b (X . e_ac)).

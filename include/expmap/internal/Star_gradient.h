@@ -123,7 +123,7 @@ inline Star_gradient star_gradient(const Mesh_arrays& m, int s, const Tangent_fr
 
 /// Width of the weights of `quadratic_fit_star_gradient`, in units of the
 /// star's mean distance from s (about 1.5 mean edge lengths on a two-ring).
-/// Chosen on the accuracy study (doc/results.md, section 0): against the
+/// Chosen on the accuracy study (doc/results.md, section 1): against the
 /// unweighted fit, 0.8 lowered the mean angle error on every regular surface
 /// (1-19%) and moved the jittered ones by -8% to +2%; 0.6 helped the regular
 /// surfaces more and cost the jittered ones up to 8%.

@@ -1,26 +1,28 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_ANALYTIC_SURFACES_H
-#define EXPMAP_ANALYTIC_SURFACES_H
-
-/// \file Analytic_surfaces.h
-/// Generators of analytic test meshes (sphere, planar grids, height fields,
-/// cylinder, cone) and the exact exponential maps (geodesic polar
-/// coordinates) of the surfaces for which they are known in closed form.
-///
-/// Every generator returns a `Triangle_soup` whose triangles are oriented
-/// counter-clockwise seen from the outside (for planar meshes and height
-/// fields: seen from +z). All generators are deterministic; the only random
-/// operation, `flip_random_edges()`, takes a seed and uses `std::mt19937`
-/// with its own (portable) shuffling, so it gives the same mesh on every
-/// platform and standard library. `soup_to_mesh()` turns a soup into any
-/// CGAL `MutableFaceGraph` (Surface_mesh, Polyhedron_3, ...) keeping the
-/// vertex order.
+//
+// Test geometry, shared by the test suites and the evaluation programs
+// (benchmark/evaluation); not part of the library. Generators of analytic
+// meshes: sphere, planar grids, height fields, cylinder, cone. Their exact
+// exponential maps, where known in closed form, are in
+// Analytic_exponential_maps.h.
+//
+// Every generator returns a `Triangle_soup` whose triangles are oriented
+// counter-clockwise seen from the outside (for planar meshes and height
+// fields: seen from +z). All generators are deterministic; the only random
+// operation, `flip_random_edges()`, takes a seed and uses `std::mt19937`
+// with its own (portable) shuffling, so it gives the same mesh on every
+// platform and standard library. `soup_to_mesh()` turns a soup into any
+// CGAL `MutableFaceGraph` (Surface_mesh, Polyhedron_3, ...) keeping the
+// vertex order.
+#ifndef EXPMAP_TEST_ANALYTIC_SURFACES_H
+#define EXPMAP_TEST_ANALYTIC_SURFACES_H
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <algorithm>
+#include <expmap/internal/Vector3.h>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -33,10 +35,7 @@
 #include <utility>
 #include <vector>
 
-namespace expmap {
-
-/// \addtogroup PkgExpmapAnalytic
-/// @{
+namespace expmap_analytic {
 
 /// A triangle mesh as a polygon soup: an array of points and an array of
 /// triangles given by indices into `points`.
@@ -51,37 +50,22 @@ struct Triangle_soup {
   std::size_t number_of_faces() const { return triangles.size(); }  ///< `triangles.size()`
 };
 
-/// Exact geodesic polar coordinates of a point relative to a source point.
-///
-/// `r` is the geodesic distance from the source. `theta_unrotated` is the
-/// polar angle in (-pi, pi] of the initial direction of the geodesic from the
-/// source, measured in the tangent plane at the source from the caller's
-/// reference direction `e1`, counter-clockwise about the outward normal `n`
-/// (i.e. `atan2(<d, e2>, <d, e1>)` with `e2 = n x e1`). It is "unrotated" in
-/// the sense that it is not aligned with the (arbitrary) angular reference of
-/// a computed map: comparisons with a computed map must first remove the
-/// constant rotation between the two. At the source itself r = 0 and
-/// theta_unrotated = 0.
-struct Polar {
-  double r = 0;                ///< geodesic distance from the source
-  double theta_unrotated = 0;  ///< polar angle from `e1`, in (-pi, pi]
-};
+namespace detail {
 
-namespace internal {
-namespace analytic {
+// The library's double 3-vectors (std::array<double, 3>, the type of the
+// soup's points) and their algebra. The generators below and the exact maps
+// (Analytic_exponential_maps.h) bring them into scope with
+// `using namespace detail`.
+using expmap::internal::Vector3;
+using expmap::internal::operator+;
+using expmap::internal::operator-;
+using expmap::internal::operator*;
+using expmap::internal::cross;
+using expmap::internal::dot;
+using expmap::internal::norm;
+using expmap::internal::squared_norm;
 
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 sub(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
-inline Vec3 add(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
-inline Vec3 scale(const Vec3& a, double s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
-inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross(const Vec3& a, const Vec3& b) {
-  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
-}
-inline double norm(const Vec3& a) { return std::sqrt(dot(a, a)); }
-
-inline bool is_finite(const Vec3& a) {
+inline bool is_finite(const Vector3& a) {
   return std::isfinite(a[0]) && std::isfinite(a[1]) && std::isfinite(a[2]);
 }
 
@@ -105,25 +89,10 @@ inline void require_vertex_budget(double count, const char* function) {
 }
 
 /// Unit vector along `v`; throws if `v` is (numerically) zero or not finite.
-inline Vec3 normalized(const Vec3& v, const std::string& what) {
+inline Vector3 normalized(const Vector3& v, const std::string& what) {
   const double length = norm(v);
   require(std::isfinite(length) && length > 0, what + " must be a non-zero finite vector");
-  return scale(v, 1.0 / length);
-}
-
-/// Polar angle of the tangent vector `d` at a point of unit normal `n`,
-/// measured from `e1` (projected onto the tangent plane) counter-clockwise
-/// about `n`.
-inline double tangent_angle(const Vec3& d, const Vec3& n, const Vec3& e1, const char* function) {
-  require(is_finite(e1), std::string(function) + ": e1 must be finite");
-  const Vec3 e1_tangent = sub(e1, scale(n, dot(e1, n)));
-  const double e1_norm = norm(e1);
-  require(e1_norm > 0 && norm(e1_tangent) > 1e-12 * e1_norm,
-          std::string(function) +
-              ": e1 must not be zero or parallel to the surface normal at the source");
-  const Vec3 u = scale(e1_tangent, 1.0 / norm(e1_tangent));
-  const Vec3 v = cross(n, u);
-  return std::atan2(dot(d, v), dot(d, u));
+  return (1.0 / length) * v;
 }
 
 /// Unbiased integer in [0, n) from the raw 32-bit output of a Mersenne
@@ -167,33 +136,7 @@ void triangulate_lattice(int columns, int rows, int parity, Index index,
   }
 }
 
-/// Integrand of the meridian length of the Gaussian bump.
-inline double gaussian_bump_speed(double t, double amplitude, double sigma) {
-  const double u = t / sigma;
-  const double slope = amplitude / sigma * u * std::exp(-0.5 * u * u);
-  return std::sqrt(1.0 + slope * slope);
-}
-
-/// Composite 5-point Gauss-Legendre rule of `panels` equal panels on [0, rho].
-inline double gaussian_bump_quadrature(double rho, double amplitude, double sigma,
-                                       std::size_t panels) {
-  const double a = std::sqrt(10.0 / 7.0);
-  const double x1 = std::sqrt(5.0 - 2.0 * a) / 3.0, x2 = std::sqrt(5.0 + 2.0 * a) / 3.0;
-  const double w0 = 128.0 / 225.0;
-  const double w1 = (322.0 + 13.0 * std::sqrt(70.0)) / 900.0;
-  const double w2 = (322.0 - 13.0 * std::sqrt(70.0)) / 900.0;
-  const double h = rho / static_cast<double>(panels);
-  double sum = 0;
-  for (std::size_t k = 0; k < panels; ++k) {
-    const double c = (static_cast<double>(k) + 0.5) * h, half = 0.5 * h;
-    auto f = [&](double x) { return gaussian_bump_speed(c + half * x, amplitude, sigma); };
-    sum += half * (w0 * f(0.0) + w1 * (f(-x1) + f(x1)) + w2 * (f(-x2) + f(x2)));
-  }
-  return sum;
-}
-
-}  // namespace analytic
-}  // namespace internal
+}  // namespace detail
 
 // ---------------------------------------------------------------------------
 // Generators
@@ -216,20 +159,20 @@ inline double gaussian_bump_quadrature(double rho, double amplitude, double sigm
 /// \param radius sphere radius, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
-  namespace A = internal::analytic;
-  A::require(subdivisions >= 0 && subdivisions <= 9,
-             "make_icosphere: subdivisions must be in [0, 9] (got " +
-                 std::to_string(subdivisions) + ")");
-  A::require_positive(radius, "make_icosphere", "radius");
+  using namespace detail;
+  require(
+      subdivisions >= 0 && subdivisions <= 9,
+      "make_icosphere: subdivisions must be in [0, 9] (got " + std::to_string(subdivisions) + ")");
+  require_positive(radius, "make_icosphere", "radius");
 
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
   Triangle_soup soup;
   const std::size_t final_vertices = 10 * (std::size_t(1) << (2 * subdivisions)) + 2;
   soup.points.reserve(final_vertices);
-  const A::Vec3 ico[12] = {{{-1, t, 0}}, {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}},
+  const Vector3 ico[12] = {{{-1, t, 0}}, {{1, t, 0}},  {{-1, -t, 0}}, {{1, -t, 0}},
                            {{0, -1, t}}, {{0, 1, t}},  {{0, -1, -t}}, {{0, 1, -t}},
                            {{t, 0, -1}}, {{t, 0, 1}},  {{-t, 0, -1}}, {{-t, 0, 1}}};
-  for (const A::Vec3& p : ico) soup.points.push_back(A::normalized(p, "icosahedron vertex"));
+  for (const Vector3& p : ico) soup.points.push_back(normalized(p, "icosahedron vertex"));
   soup.triangles = {{{0, 11, 5}}, {{0, 5, 1}},  {{0, 1, 7}},   {{0, 7, 10}}, {{0, 10, 11}},
                     {{1, 5, 9}},  {{5, 11, 4}}, {{11, 10, 2}}, {{10, 7, 6}}, {{7, 1, 8}},
                     {{3, 9, 4}},  {{3, 4, 2}},  {{3, 2, 6}},   {{3, 6, 8}},  {{3, 8, 9}},
@@ -239,12 +182,12 @@ inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
     std::unordered_map<std::uint64_t, int> midpoint;
     midpoint.reserve(soup.triangles.size() * 3 / 2);
     auto middle = [&](int a, int b) {
-      const std::uint64_t key = a < b ? A::directed_key(a, b) : A::directed_key(b, a);
+      const std::uint64_t key = a < b ? directed_key(a, b) : directed_key(b, a);
       const auto found = midpoint.find(key);
       if (found != midpoint.end()) return found->second;
-      const A::Vec3 m = A::add(soup.points[std::size_t(a)], soup.points[std::size_t(b)]);
+      const Vector3 m = soup.points[std::size_t(a)] + soup.points[std::size_t(b)];
       const int index = static_cast<int>(soup.points.size());
-      soup.points.push_back(A::normalized(m, "edge midpoint"));
+      soup.points.push_back(normalized(m, "edge midpoint"));
       midpoint.emplace(key, index);
       return index;
     };
@@ -260,7 +203,7 @@ inline Triangle_soup make_icosphere(int subdivisions, double radius = 1.0) {
     soup.triangles.swap(finer);
   }
   if (radius != 1.0)
-    for (auto& p : soup.points) p = A::scale(p, radius);
+    for (auto& p : soup.points) p = radius * p;
   return soup;
 }
 
@@ -277,8 +220,8 @@ inline std::size_t grid_vertex_index(int nx, int i, int j) {
 /// four diagonals meet there).
 /// \throws std::invalid_argument unless nx and ny are even and positive
 inline std::size_t grid_origin_vertex(int nx, int ny) {
-  internal::analytic::require(nx > 0 && ny > 0 && nx % 2 == 0 && ny % 2 == 0,
-                              "grid_origin_vertex: nx and ny must be even and positive");
+  detail::require(nx > 0 && ny > 0 && nx % 2 == 0 && ny % 2 == 0,
+                  "grid_origin_vertex: nx and ny must be even and positive");
   return grid_vertex_index(nx, nx / 2, ny / 2);
 }
 
@@ -305,12 +248,12 @@ inline std::size_t grid_origin_vertex(int nx, int ny) {
 /// \param height extent along y, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
-  namespace A = internal::analytic;
-  A::require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " +
-                                     std::to_string(nx) + ", " + std::to_string(ny) + ")");
-  A::require_positive(width, "make_grid", "width");
-  A::require_positive(height, "make_grid", "height");
-  A::require_vertex_budget(2.0 * (double(nx) + 1) * (double(ny) + 1), "make_grid");
+  using namespace detail;
+  require(nx >= 1 && ny >= 1, "make_grid: nx and ny must be at least 1 (got " + std::to_string(nx) +
+                                  ", " + std::to_string(ny) + ")");
+  require_positive(width, "make_grid", "width");
+  require_positive(height, "make_grid", "height");
+  require_vertex_budget(2.0 * (double(nx) + 1) * (double(ny) + 1), "make_grid");
 
   Triangle_soup soup;
   soup.points.reserve(std::size_t(nx + 1) * std::size_t(ny + 1));
@@ -322,10 +265,9 @@ inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
     }
   }
   soup.triangles.reserve(2 * std::size_t(nx) * std::size_t(ny));
-  A::triangulate_lattice(
+  triangulate_lattice(
       nx, ny, nx / 2 + ny / 2,
-      [nx](int i, int j) { return static_cast<int>(grid_vertex_index(nx, i, j)); },
-      soup.triangles);
+      [nx](int i, int j) { return static_cast<int>(grid_vertex_index(nx, i, j)); }, soup.triangles);
   return soup;
 }
 
@@ -343,12 +285,12 @@ inline Triangle_soup make_grid(int nx, int ny, double width, double height) {
 /// \param edge edge length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_equilateral_grid(int rings, double edge) {
-  namespace A = internal::analytic;
-  A::require(rings >= 1, "make_equilateral_grid: rings must be at least 1 (got " +
-                             std::to_string(rings) + ")");
-  A::require_positive(edge, "make_equilateral_grid", "edge");
-  A::require_vertex_budget(6.0 * double(rings) * double(rings) + 3.0 * rings + 1,
-                           "make_equilateral_grid");
+  using namespace detail;
+  require(rings >= 1,
+          "make_equilateral_grid: rings must be at least 1 (got " + std::to_string(rings) + ")");
+  require_positive(edge, "make_equilateral_grid", "edge");
+  require_vertex_budget(6.0 * double(rings) * double(rings) + 3.0 * rings + 1,
+                        "make_equilateral_grid");
 
   // Axial lattice coordinates (a, b): position a * (1, 0) + b * (1/2, sqrt(3)/2).
   const int d[6][2] = {{1, 0}, {0, 1}, {-1, 1}, {-1, 0}, {0, -1}, {1, -1}};
@@ -422,26 +364,25 @@ inline Triangle_soup make_equilateral_grid(int rings, double edge) {
 /// \throws std::invalid_argument if fraction is outside [0, 1], an index is
 ///         out of range, or a directed edge is used by two triangles
 inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsigned seed) {
-  namespace A = internal::analytic;
-  A::require(fraction >= 0.0 && fraction <= 1.0,
-             "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) +
-                 ")");
+  using namespace detail;
+  require(fraction >= 0.0 && fraction <= 1.0,
+          "flip_random_edges: fraction must be in [0, 1] (got " + std::to_string(fraction) + ")");
   const int n = static_cast<int>(soup.points.size());
   std::unordered_map<std::uint64_t, int> face_of;  // directed edge (u, v) -> face
   face_of.reserve(3 * soup.triangles.size());
   for (std::size_t f = 0; f < soup.triangles.size(); ++f) {
     const auto& t = soup.triangles[f];
     for (int k = 0; k < 3; ++k) {
-      A::require(t[k] >= 0 && t[k] < n, "flip_random_edges: vertex index out of range");
-      A::require(t[k] != t[(k + 1) % 3], "flip_random_edges: degenerate triangle");
-      const bool inserted = face_of.emplace(A::directed_key(t[k], t[(k + 1) % 3]), int(f)).second;
-      A::require(inserted,
-                 "flip_random_edges: a directed edge is used twice (non-manifold or "
-                 "inconsistently oriented soup)");
+      require(t[k] >= 0 && t[k] < n, "flip_random_edges: vertex index out of range");
+      require(t[k] != t[(k + 1) % 3], "flip_random_edges: degenerate triangle");
+      const bool inserted = face_of.emplace(directed_key(t[k], t[(k + 1) % 3]), int(f)).second;
+      require(inserted,
+              "flip_random_edges: a directed edge is used twice (non-manifold or "
+              "inconsistently oriented soup)");
     }
   }
   auto face_at = [&](int u, int v) {
-    const auto it = face_of.find(A::directed_key(u, v));
+    const auto it = face_of.find(directed_key(u, v));
     return it == face_of.end() ? -1 : it->second;
   };
   auto opposite = [&](int f, int u, int v) {
@@ -460,29 +401,29 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
     const auto& pb = soup.points[std::size_t(b)];
     const auto& pc = soup.points[std::size_t(c)];
     const auto& pd = soup.points[std::size_t(d)];
-    const A::Vec3 n1 = A::cross(A::sub(pb, pa), A::sub(pc, pa));
-    const A::Vec3 n2 = A::cross(A::sub(pa, pb), A::sub(pd, pb));
-    const double l1 = A::norm(n1), l2 = A::norm(n2);
+    const Vector3 n1 = cross(pb - pa, pc - pa);
+    const Vector3 n2 = cross(pa - pb, pd - pb);
+    const double l1 = norm(n1), l2 = norm(n2);
     if (!(l1 > 0) || !(l2 > 0)) return false;
-    const A::Vec3 normal = A::add(A::scale(n1, 1.0 / l1), A::scale(n2, 1.0 / l2));
-    const double ln = A::norm(normal);
+    const Vector3 normal = (1.0 / l1) * n1 + (1.0 / l2) * n2;
+    const double ln = norm(normal);
     if (!(ln > 1e-12)) return false;  // the two triangles fold onto each other
-    auto positive = [&](const A::Vec3& p, const A::Vec3& q, const A::Vec3& r) {
-      const A::Vec3 u = A::sub(q, p), v = A::sub(r, p);
-      return A::dot(A::cross(u, v), normal) > 1e-10 * ln * A::norm(u) * A::norm(v);
+    auto positive = [&](const Vector3& p, const Vector3& q, const Vector3& r) {
+      const Vector3 u = q - p, v = r - p;
+      return dot(cross(u, v), normal) > 1e-10 * ln * norm(u) * norm(v);
     };
     if (!positive(pa, pd, pc) || !positive(pd, pb, pc)) return false;
     if (!apply) return true;
     soup.triangles[std::size_t(f1)] = {{a, d, c}};
     soup.triangles[std::size_t(f2)] = {{d, b, c}};
-    face_of.erase(A::directed_key(a, b));
-    face_of.erase(A::directed_key(b, a));
-    face_of[A::directed_key(a, d)] = f1;
-    face_of[A::directed_key(d, c)] = f1;
-    face_of[A::directed_key(c, a)] = f1;
-    face_of[A::directed_key(d, b)] = f2;
-    face_of[A::directed_key(b, c)] = f2;
-    face_of[A::directed_key(c, d)] = f2;
+    face_of.erase(directed_key(a, b));
+    face_of.erase(directed_key(b, a));
+    face_of[directed_key(a, d)] = f1;
+    face_of[directed_key(d, c)] = f1;
+    face_of[directed_key(c, a)] = f1;
+    face_of[directed_key(d, b)] = f2;
+    face_of[directed_key(b, c)] = f2;
+    face_of[directed_key(c, d)] = f2;
     return true;
   };
 
@@ -500,7 +441,7 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
 
   std::mt19937 generator(seed);
   for (std::size_t i = candidates.size() - 1; i > 0; --i) {
-    const std::size_t j = A::uniform_below(generator, static_cast<std::uint32_t>(i + 1));
+    const std::size_t j = uniform_below(generator, static_cast<std::uint32_t>(i + 1));
     std::swap(candidates[i], candidates[j]);
   }
   std::vector<char> done(candidates.size(), 0);
@@ -526,10 +467,10 @@ inline std::size_t flip_random_edges(Triangle_soup& soup, double fraction, unsig
 /// \param sx,sy,sz scale factors, positive and finite
 /// \throws std::invalid_argument if a factor is not positive
 inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, double sz) {
-  namespace A = internal::analytic;
-  A::require_positive(sx, "scale_anisotropically", "sx");
-  A::require_positive(sy, "scale_anisotropically", "sy");
-  A::require_positive(sz, "scale_anisotropically", "sz");
+  using namespace detail;
+  require_positive(sx, "scale_anisotropically", "sx");
+  require_positive(sy, "scale_anisotropically", "sy");
+  require_positive(sz, "scale_anisotropically", "sz");
   for (auto& p : soup.points) {
     p[0] *= sx;
     p[1] *= sy;
@@ -538,8 +479,7 @@ inline void scale_anisotropically(Triangle_soup& soup, double sx, double sy, dou
 }
 
 // Height field z = f(x, y) on make_grid(n, n, 2 half_width, 2 half_width).
-namespace internal {
-namespace analytic {
+namespace detail {
 
 template <class Height>
 Triangle_soup make_height_field(int n, double half_width, Height f, const char* function) {
@@ -551,8 +491,7 @@ Triangle_soup make_height_field(int n, double half_width, Height f, const char* 
   return soup;
 }
 
-}  // namespace analytic
-}  // namespace internal
+}  // namespace detail
 
 /// Gaussian bump: the height field z = amplitude * exp(-(x^2 + y^2) / (2 sigma^2))
 /// over the square [-half_width, half_width]^2, sampled on the grid of
@@ -570,11 +509,11 @@ Triangle_soup make_height_field(int n, double half_width, Height f, const char* 
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitude,
                                         double sigma) {
-  namespace A = internal::analytic;
-  A::require_finite(amplitude, "make_gaussian_bump", "amplitude");
-  A::require_positive(sigma, "make_gaussian_bump", "sigma");
+  using namespace detail;
+  require_finite(amplitude, "make_gaussian_bump", "amplitude");
+  require_positive(sigma, "make_gaussian_bump", "sigma");
   const double inv = 1.0 / (2.0 * sigma * sigma);
-  return internal::analytic::make_height_field(
+  return detail::make_height_field(
       n, half_width,
       [=](double x, double y) { return amplitude * std::exp(-(x * x + y * y) * inv); },
       "make_gaussian_bump");
@@ -593,8 +532,8 @@ inline Triangle_soup make_gaussian_bump(int n, double half_width, double amplitu
 /// \param amplitude amplitude of the sine product, finite
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
-  internal::analytic::require_finite(amplitude, "make_saddle", "amplitude");
-  return internal::analytic::make_height_field(
+  detail::require_finite(amplitude, "make_saddle", "amplitude");
+  return detail::make_height_field(
       n, half_width, [=](double x, double y) { return amplitude * std::sin(x) * std::sin(y); },
       "make_saddle");
 }
@@ -618,14 +557,14 @@ inline Triangle_soup make_saddle(int n, double half_width, double amplitude) {
 /// \param length cylinder length, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cylinder(int around, int along, double radius, double length) {
-  namespace A = internal::analytic;
-  A::require(around >= 3, "make_cylinder: around must be at least 3 (got " +
-                              std::to_string(around) + ")");
-  A::require(along >= 1, "make_cylinder: along must be at least 1 (got " +
-                             std::to_string(along) + ")");
-  A::require_positive(radius, "make_cylinder", "radius");
-  A::require_positive(length, "make_cylinder", "length");
-  A::require_vertex_budget(2.0 * double(around) * (double(along) + 1), "make_cylinder");
+  using namespace detail;
+  require(around >= 3,
+          "make_cylinder: around must be at least 3 (got " + std::to_string(around) + ")");
+  require(along >= 1,
+          "make_cylinder: along must be at least 1 (got " + std::to_string(along) + ")");
+  require_positive(radius, "make_cylinder", "radius");
+  require_positive(length, "make_cylinder", "length");
+  require_vertex_budget(2.0 * double(around) * (double(along) + 1), "make_cylinder");
 
   const double two_pi = 2.0 * std::acos(-1.0);
   Triangle_soup soup;
@@ -639,7 +578,7 @@ inline Triangle_soup make_cylinder(int around, int along, double radius, double 
   }
   soup.triangles.reserve(2 * std::size_t(around) * std::size_t(along));
   // Parity along/2: the source vertex (along/2) * around has valence 8.
-  A::triangulate_lattice(
+  triangulate_lattice(
       around, along, along / 2, [around](int i, int j) { return j * around + i % around; },
       soup.triangles);
   return soup;
@@ -666,16 +605,14 @@ inline Triangle_soup make_cylinder(int around, int along, double radius, double 
 /// \param length slant length of the generators, positive
 /// \throws std::invalid_argument if a parameter is out of range
 inline Triangle_soup make_cone(int around, int along, double apex_angle, double length) {
-  namespace A = internal::analytic;
+  using namespace detail;
   const double pi = std::acos(-1.0);
-  A::require(around >= 3,
-             "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
-  A::require(along >= 1,
-             "make_cone: along must be at least 1 (got " + std::to_string(along) + ")");
-  A::require(std::isfinite(apex_angle) && apex_angle > 0 && apex_angle < pi,
-             "make_cone: apex_angle must be in (0, pi) (got " + std::to_string(apex_angle) + ")");
-  A::require_positive(length, "make_cone", "length");
-  A::require_vertex_budget(2.0 * double(around) * double(along) + 1, "make_cone");
+  require(around >= 3, "make_cone: around must be at least 3 (got " + std::to_string(around) + ")");
+  require(along >= 1, "make_cone: along must be at least 1 (got " + std::to_string(along) + ")");
+  require(std::isfinite(apex_angle) && apex_angle > 0 && apex_angle < pi,
+          "make_cone: apex_angle must be in (0, pi) (got " + std::to_string(apex_angle) + ")");
+  require_positive(length, "make_cone", "length");
+  require_vertex_budget(2.0 * double(around) * double(along) + 1, "make_cone");
 
   const double alpha = 0.5 * apex_angle;
   Triangle_soup soup;
@@ -692,7 +629,7 @@ inline Triangle_soup make_cone(int around, int along, double apex_angle, double 
   soup.triangles.reserve(std::size_t(around) * std::size_t(2 * along - 1));
   auto ring = [around](int i, int j) { return 1 + (j - 1) * around + i % around; };
   for (int i = 0; i < around; ++i) soup.triangles.push_back({{0, ring(i + 1, 1), ring(i, 1)}});
-  A::triangulate_lattice(
+  triangulate_lattice(
       around, along - 1, 0, [&](int i, int j) { return ring(i, j + 1); }, soup.triangles);
   return soup;
 }
@@ -701,13 +638,12 @@ inline Triangle_soup make_cone(int around, int along, double apex_angle, double 
 /// smallest index.
 /// \throws std::invalid_argument if the soup has no points
 inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<double, 3>& p) {
-  namespace A = internal::analytic;
-  A::require(!soup.points.empty(), "closest_vertex: the soup has no points");
+  using namespace detail;
+  require(!soup.points.empty(), "closest_vertex: the soup has no points");
   std::size_t best = 0;
   double best_distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < soup.points.size(); ++i) {
-    const A::Vec3 d = A::sub(soup.points[i], p);
-    const double squared = A::dot(d, d);
+    const double squared = squared_norm(soup.points[i] - p);
     if (squared < best_distance) {
       best_distance = squared;
       best = i;
@@ -736,172 +672,21 @@ inline std::size_t closest_vertex(const Triangle_soup& soup, const std::array<do
 ///         range, or the soup is not a polygon mesh
 template <class PolygonMesh>
 void soup_to_mesh(const Triangle_soup& soup, PolygonMesh& mesh) {
-  namespace A = internal::analytic;
-  A::require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
+  using namespace detail;
+  require(CGAL::is_empty(mesh), "soup_to_mesh: the output mesh must be empty");
   std::vector<std::array<std::size_t, 3>> polygons;
   polygons.reserve(soup.triangles.size());
   const int n = static_cast<int>(soup.points.size());
   for (const auto& t : soup.triangles) {
     for (int k = 0; k < 3; ++k)
-      A::require(t[k] >= 0 && t[k] < n, "soup_to_mesh: vertex index out of range");
+      require(t[k] >= 0 && t[k] < n, "soup_to_mesh: vertex index out of range");
     polygons.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
   }
-  A::require(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
-             "soup_to_mesh: the soup is not a consistently oriented manifold polygon mesh");
+  require(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons),
+          "soup_to_mesh: the soup is not a consistently oriented manifold polygon mesh");
   CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, polygons, mesh);
 }
 
-// ---------------------------------------------------------------------------
-// Exact exponential maps
-// ---------------------------------------------------------------------------
+}  // namespace expmap_analytic
 
-/// Exact exponential map of the sphere of radius `radius` centred at the
-/// origin.
-///
-/// `source` and `p` are projected radially onto the sphere. The distance is
-/// `radius * angle(source, p)` (computed with atan2, accurate everywhere).
-/// The angle is that of the initial direction of the minimizing great
-/// circle from the source, measured from `e1` (projected onto the tangent
-/// plane at the source) counter-clockwise about the outward normal
-/// n = source / |source|. At the antipode the direction is undefined (the
-/// returned angle is then meaningless, r = pi radius).
-///
-/// \param source source point (non-zero)
-/// \param p query point (non-zero)
-/// \param radius sphere radius, positive
-/// \param e1 angular reference direction, not parallel to the normal at the source
-/// \throws std::invalid_argument for zero points, a non-positive radius or a bad e1
-inline Polar sphere_exponential_map(const std::array<double, 3>& source,
-                                    const std::array<double, 3>& p, double radius,
-                                    const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
-  A::require_positive(radius, "sphere_exponential_map", "radius");
-  const A::Vec3 n = A::normalized(source, "sphere_exponential_map: source");
-  const A::Vec3 q = A::normalized(p, "sphere_exponential_map: p");
-  const double angle = std::atan2(A::norm(A::cross(n, q)), A::dot(n, q));
-  Polar result;
-  result.r = radius * angle;
-  // The log direction is the tangential part of q; its normal part does not
-  // change the angle.
-  const double theta = A::tangent_angle(q, n, e1, "sphere_exponential_map");
-  result.theta_unrotated = angle > 0 ? theta : 0.0;
-  return result;
-}
-
-/// Exact exponential map of the plane z = 0 (normal +z).
-///
-/// `source` and `p` are projected onto the plane (their z is ignored);
-/// r = |p - source| and the angle is measured from `e1` (projected onto the
-/// plane) counter-clockwise about +z, i.e. in the frame (e1, e2 = z x e1).
-///
-/// \throws std::invalid_argument if e1 is zero or vertical
-inline Polar plane_exponential_map(const std::array<double, 3>& source,
-                                   const std::array<double, 3>& p,
-                                   const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
-  const A::Vec3 d = {{p[0] - source[0], p[1] - source[1], 0.0}};
-  Polar result;
-  result.r = std::hypot(d[0], d[1]);
-  const double theta = A::tangent_angle(d, {{0.0, 0.0, 1.0}}, e1, "plane_exponential_map");
-  result.theta_unrotated = result.r > 0 ? theta : 0.0;
-  return result;
-}
-
-/// Exact exponential map of the infinite cylinder of axis z (through the
-/// origin) and radius `radius`, computed by unrolling.
-///
-/// `source` and `p` are projected radially onto the cylinder (only their
-/// azimuths and heights are used). With dphi the azimuth difference wrapped
-/// to (-pi, pi] and dz the height difference, the unrolled vector is
-/// (radius dphi, dz) in the tangent frame (azimuthal direction, +z) at the
-/// source: r = hypot(radius dphi, dz) and the angle is measured from `e1`
-/// (projected onto the tangent plane) counter-clockwise about the outward
-/// normal (away from the axis). This is the minimizing geodesic, valid as
-/// long as it does not wrap more than half the circumference.
-///
-/// \throws std::invalid_argument if radius is not positive, a point is on
-///         the axis, or e1 is zero or parallel to the normal
-inline Polar cylinder_exponential_map(const std::array<double, 3>& source,
-                                      const std::array<double, 3>& p, double radius,
-                                      const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
-  A::require_positive(radius, "cylinder_exponential_map", "radius");
-  A::require(std::hypot(source[0], source[1]) > 0 && std::hypot(p[0], p[1]) > 0,
-             "cylinder_exponential_map: points must not lie on the axis");
-  const double pi = std::acos(-1.0);
-  const double phi_s = std::atan2(source[1], source[0]);
-  double dphi = std::atan2(p[1], p[0]) - phi_s;
-  if (dphi > pi) dphi -= 2 * pi;
-  if (dphi <= -pi) dphi += 2 * pi;
-  const double u = radius * dphi, v = p[2] - source[2];
-  const A::Vec3 n = {{std::cos(phi_s), std::sin(phi_s), 0.0}};
-  const A::Vec3 azimuthal = {{-std::sin(phi_s), std::cos(phi_s), 0.0}};
-  const A::Vec3 d = A::add(A::scale(azimuthal, u), {{0.0, 0.0, v}});
-  Polar result;
-  result.r = std::hypot(u, v);
-  const double theta = A::tangent_angle(d, n, e1, "cylinder_exponential_map");
-  result.theta_unrotated = result.r > 0 ? theta : 0.0;
-  return result;
-}
-
-/// Length of the meridian of the Gaussian bump z = A exp(-rho^2 / (2 sigma^2))
-/// from the apex to the parallel of radius `rho`, i.e. the integral of
-/// sqrt(1 + z'(t)^2) over [0, rho].
-///
-/// Computed with composite 5-point Gauss-Legendre quadrature, doubling the
-/// number of panels until two successive results agree to 1e-13 relative
-/// (the integrand is analytic, so the result is accurate to ~1e-13, far below
-/// the required 1e-10).
-///
-/// \throws std::invalid_argument if rho is negative or sigma not positive
-inline double gaussian_bump_meridian_length(double rho, double amplitude, double sigma) {
-  namespace A = internal::analytic;
-  A::require(std::isfinite(rho) && rho >= 0,
-             "gaussian_bump_meridian_length: rho must be non-negative and finite");
-  A::require_finite(amplitude, "gaussian_bump_meridian_length", "amplitude");
-  A::require_positive(sigma, "gaussian_bump_meridian_length", "sigma");
-  if (rho == 0) return 0;
-  // Panels about sigma / 4 wide, and narrow enough for steep flanks.
-  const double steepness = 1.0 + std::abs(amplitude) / sigma;
-  std::size_t panels =
-      static_cast<std::size_t>(std::ceil(std::min(4.0 * rho / sigma * steepness, 1e4))) + 1;
-  double previous = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
-  for (int refinement = 0; refinement < 12; ++refinement) {
-    panels *= 2;
-    const double current = A::gaussian_bump_quadrature(rho, amplitude, sigma, panels);
-    if (std::abs(current - previous) <= 1e-13 * current) return current;
-    previous = current;
-  }
-  return previous;
-}
-
-/// Exact exponential map of the Gaussian bump
-/// z = amplitude exp(-(x^2 + y^2) / (2 sigma^2)) with the source at the apex
-/// (0, 0, amplitude) (vertex `grid_origin_vertex(n, n)` of
-/// `make_gaussian_bump()`).
-///
-/// The bump is a surface of revolution and the source is its pole, so the
-/// geodesics from the source are the meridians: r is the meridian arc length
-/// `gaussian_bump_meridian_length(hypot(x, y), amplitude, sigma)` and the
-/// angle is the azimuth of (x, y) measured from `e1` counter-clockwise about
-/// +z (the tangent plane at the apex is horizontal; `e1` is projected onto
-/// it). Only the x and y coordinates of `p` are used.
-///
-/// \throws std::invalid_argument if sigma is not positive or e1 is zero or vertical
-inline Polar gaussian_bump_exponential_map(const std::array<double, 3>& p, double amplitude,
-                                           double sigma, const std::array<double, 3>& e1) {
-  namespace A = internal::analytic;
-  const double rho = std::hypot(p[0], p[1]);
-  Polar result;
-  result.r = gaussian_bump_meridian_length(rho, amplitude, sigma);
-  const double theta = A::tangent_angle({{p[0], p[1], 0.0}}, {{0.0, 0.0, 1.0}}, e1,
-                                        "gaussian_bump_exponential_map");
-  result.theta_unrotated = rho > 0 ? theta : 0.0;
-  return result;
-}
-
-/// @}
-
-}  // namespace expmap
-
-#endif  // EXPMAP_ANALYTIC_SURFACES_H
+#endif  // EXPMAP_TEST_ANALYTIC_SURFACES_H

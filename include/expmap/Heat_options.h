@@ -1,0 +1,127 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_HEAT_OPTIONS_H
+#define EXPMAP_HEAT_OPTIONS_H
+
+/// \file Heat_options.h
+/// The settings of `Heat_exponential_map`. The measurements behind the
+/// defaults are in doc/results.md and doc/performance.md.
+
+#include <expmap/Angle_estimator.h>
+#include <expmap/Errors.h>
+#include <expmap/Factor_precision.h>
+
+#include <cmath>
+#include <string>
+
+namespace expmap {
+
+/// \ingroup PkgExpmapRef
+/// Which triangulation the Laplacian is built on (as in CGAL's Heat_method_3).
+enum class Laplacian_mode {
+  direct,             ///< the input mesh as it is
+  intrinsic_delaunay  ///< its intrinsic Delaunay triangulation (robust on poor meshes)
+};
+
+/// \ingroup PkgExpmapRef
+/// The area each vertex stands for in the heat step's lumped mass matrix.
+enum class Vertex_area {
+  /// A third of every incident triangle (CGAL's Heat_method_3, the paper).
+  barycentric,
+  /// The mixed Voronoi area of Meyer et al. (VisMath 2002). Exact for
+  /// quadratics on non-obtuse Delaunay meshes, so irregular triangles bias
+  /// the heat, and with it the angles, less.
+  mixed_voronoi
+};
+
+/// \ingroup PkgExpmapRef
+/// How the singular Poisson system of the distance step is made definite.
+enum class Poisson_regularization {
+  /// Pins one vertex per connected component. Exact: the distance is
+  /// defined up to a constant.
+  pinned_vertex,
+  /// Adds 1e-8 per incident face corner to the diagonal, as CGAL's
+  /// Heat_method_3 does. For comparisons with CGAL only.
+  cgal_compatible
+};
+
+/// \ingroup PkgExpmapRef
+/// The settings of a `Heat_exponential_map`. The first group changes the
+/// factorizations and is read by the constructor; the second tunes the
+/// queries the object answers.
+struct Heat_options {
+  /// \name Precomputation
+  /// @{
+
+  /// Diffusion time t = time_factor * h^2, h the mean edge length. Larger
+  /// values give smoother maps; smaller ones distances closer to geodesic.
+  double time_factor = 10.0;
+  /// The intrinsic Delaunay triangulation keeps the heat positive on meshes
+  /// with obtuse triangles; on Delaunay meshes both modes are the same.
+  Laplacian_mode laplacian = Laplacian_mode::intrinsic_delaunay;
+  /// The mass matrix of the heat step.
+  Vertex_area vertex_area = Vertex_area::mixed_voronoi;
+  /// How the Poisson system is made definite.
+  Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
+  /// Single precision halves the factors' memory and speeds queries on
+  /// large meshes, moving the maps by about 1e-6 of the radius.
+  Factor_precision factor_precision = Factor_precision::double_precision;
+  /// Truncation of the low-rank rows below the Poisson factor's large
+  /// separators (meshes above about 100k vertices): fewer entries read per
+  /// query. 0 keeps every block dense. At most 1e-10.
+  double poisson_compression_tolerance = 1e-14;
+  /// @}
+
+  /// \name Queries
+  /// @{
+
+  /// A query solves on a region this many times larger (in vertices) than
+  /// its patch; the Poisson step's cut-off error stays in the margin. At
+  /// least 1.
+  double region_growth = 2.0;
+  /// On small patches of meshes of 200,000 vertices or more, heat below
+  /// this tolerance times the smallest value read is not propagated
+  /// (values move by about this relative amount). 0 never prunes; at most
+  /// 1e-10.
+  double pruning_tolerance = 1e-12;
+  /// How the direction of the geodesic is read off the heat.
+  Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
+  /// Geometric directions next to the source, heat directions beyond.
+  Near_source_blend near_source_blend;
+  /// 1 or 2. With 2 a query's star solve runs on a second thread beside
+  /// the distance: for one query at a time, as in an interactive tool
+  /// (`compute_many()` already keeps every core busy).
+  int query_threads = 1;
+  /// @}
+};
+
+/// \ingroup PkgExpmapRef
+/// `options` if every setting is in its range.
+/// \throws Invalid_input naming the first setting that is not.
+inline const Heat_options& checked(const Heat_options& options) {
+  if (!(options.time_factor > 0) || !std::isfinite(options.time_factor))
+    throw Invalid_input("the time factor must be positive and finite (got " +
+                        std::to_string(options.time_factor) + ")");
+  const Near_source_blend& blend = options.near_source_blend;
+  if (!(blend.begin >= 0) || !(blend.end >= blend.begin) || !std::isfinite(blend.end))
+    throw Invalid_input("near_source_blend must satisfy 0 <= begin <= end < infinity (got begin " +
+                        std::to_string(blend.begin) + ", end " + std::to_string(blend.end) + ")");
+  if (!(options.pruning_tolerance >= 0) || !(options.pruning_tolerance <= 1e-10))
+    throw Invalid_input("pruning_tolerance must be in [0, 1e-10] (got " +
+                        std::to_string(options.pruning_tolerance) + ")");
+  if (!(options.poisson_compression_tolerance >= 0) ||
+      !(options.poisson_compression_tolerance <= 1e-10))
+    throw Invalid_input("poisson_compression_tolerance must be in [0, 1e-10] (got " +
+                        std::to_string(options.poisson_compression_tolerance) + ")");
+  if (options.query_threads != 1 && options.query_threads != 2)
+    throw Invalid_input("query_threads must be 1 or 2 (got " +
+                        std::to_string(options.query_threads) + ")");
+  if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
+    throw Invalid_input("region_growth must be at least 1 (got " +
+                        std::to_string(options.region_growth) + ")");
+  return options;
+}
+
+}  // namespace expmap
+
+#endif  // EXPMAP_HEAT_OPTIONS_H

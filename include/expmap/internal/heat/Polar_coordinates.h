@@ -1,0 +1,190 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_HEAT_POLAR_COORDINATES_H
+#define EXPMAP_INTERNAL_HEAT_POLAR_COORDINATES_H
+
+// Step 7 (manual, section 2): the polar coordinates of the patch vertices,
+// the angle from the star solve's heat directions, blended with geometric
+// directions next to the source, and the distance from step 4.
+
+#include <expmap/Angle_estimator.h>
+#include <expmap/Errors.h>
+#include <expmap/internal/Local_map_assembly.h>
+#include <expmap/internal/Near_source_zone.h>
+#include <expmap/internal/Source_one_ring.h>
+#include <expmap/internal/Star_gradient.h>
+#include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/heat/Query_workspace.h>
+#include <expmap/internal/heat/Star_solve.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+namespace heat {
+
+/// The near-source blend is stretched by up to this factor where the
+/// surface is flat at its scale (measured on the accuracy study,
+/// doc/results.md: 3h-9h instead of 2h-6h lowers the mean angle error on
+/// every surface; 4h-12h raises the regular saddle's).
+constexpr double max_near_source_widening = 1.5;
+/// The normal's turn (rad) across the blend's end at which the blend keeps
+/// its nominal width; it is narrower where the normal turns more. On a
+/// coarse, curved one-ring the projected chords disagree with the heat's
+/// directions of the next rings, and a blend between them shears the
+/// triangles in between over (doc/folds.md).
+constexpr double blend_normal_turn = 1.0;
+
+// The query's blend from geometric into heat coordinates: the options'
+// Near_source_blend in mean edge lengths, scaled by blend_normal_turn over
+// the normal's turn across the blend's end (at most
+// max_near_source_widening). `normal`: the vertex normal of s.
+inline Near_source_zone near_source_zone(const Context& c, int s, const Vector3& normal) {
+  const double h = c.mesh.mean_edge_length;
+  Near_source_zone zone{c.options.near_source_blend.begin * h, c.options.near_source_blend.end * h};
+  if (zone.end > 0) {
+    const double turn = normal_turn_rate(c.mesh, s, normal) * zone.end;
+    const double scale = turn > 0 ? std::min(blend_normal_turn / turn, max_near_source_widening)
+                                  : max_near_source_widening;
+    zone.begin *= scale;
+    zone.end *= scale;
+  }
+  return zone;
+}
+
+// The distance of v at heat distance r. A neighbour of the source takes its
+// edge's length (the exact polyhedral distance), blended into r like the
+// angle: the heat distance is off by about 0.1 h anywhere, a tenth of a
+// neighbour's distance. Farther vertices keep r: chords there cut through
+// space on coarse curved meshes and fold triangles over.
+inline double blended_distance(const Context& c, int s, int v, double r,
+                               const Source_one_ring& ring, const Near_source_zone& zone) {
+  const double w = zone.heat_weight(r);
+  if (w == 1.0 || ring.position(v) < 0) return r;
+  const double edge = norm(c.mesh.point[v] - c.mesh.point[s]);
+  return w * r + (1 - w) * edge;
+}
+
+// The geometric direction of v next to the source: a neighbour's edge at
+// its intrinsic angle (the corner angles at s rescaled to 2 pi, as DGPC
+// starts), any other vertex's chord projected onto the tangent plane and
+// carried into the same intrinsic angles by the wedge of neighbours it
+// projects into. A projection alone shrinks or widens the corners of a
+// curved one-ring unevenly and can take them out of their cyclic order.
+inline double near_source_angle(const Context& c, int s, int v, const Tangent_frame& frame,
+                                const Source_one_ring& ring) {
+  if (const int k = ring.position(v); k >= 0)
+    return ring.angle[static_cast<std::size_t>(k)] - ring.reference_angle;
+  const double projected = frame.angle_of(c.mesh.point[v] - c.mesh.point[s]);
+  return ring.native_angle(projected) - ring.reference_angle;
+}
+
+// Polar angle of v at heat distance r from its heat direction, blended with
+// the geometric direction next to the source.
+inline double polar_angle(const Context& c, int s, int v, double r,
+                          const std::array<double, 2>& direction, const Tangent_frame& frame,
+                          const Source_one_ring& ring, const Near_source_zone& zone) {
+  const double w = zone.heat_weight(r);
+  if (w == 0.0) return near_source_angle(c, s, v, frame, ring);
+  const double heat_angle = std::atan2(direction[1], direction[0]);
+  if (w == 1.0) return heat_angle;
+  const double geometric = near_source_angle(c, s, v, frame, ring);
+  // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
+  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(geometric),
+                    w * std::cos(heat_angle) + (1 - w) * std::cos(geometric));
+}
+
+// The gradient at s of the heat from patch vertex v, from its star solve
+// row `h`: the direction of the geodesic from s to v (the paper's step 3,
+// by the heat's symmetry). For `heat_quadratic_fit` it is divided by
+// `at_source`, the heat from v at s, and still carries the fit's cubic leak.
+inline std::array<double, 2> heat_direction(const Context& c, double at_source,
+                                            const Star_gradient& star, const double* h,
+                                            std::vector<double>& values) {
+  const Angle_estimator estimator = c.factors.angle_estimator;
+  if (is_linear_in_heat(estimator)) {
+    // The solve applied the gradient weights already.
+    if (estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
+      return {{h[0] / at_source, h[1] / at_source}};
+    return {{h[0], h[1]}};
+  }
+  const std::size_t width = star.vertices.size();
+  const bool use_log = std::all_of(h, h + width, [](double x) { return x > 0; });
+  for (std::size_t k = 0; k < width; ++k) values[k] = use_log ? std::log(h[k]) : h[k];
+  return star.apply(values.data());
+}
+
+// The polar coordinates of the patch (region positions `order`, the source
+// first) in original vertex indices, the source left out.
+inline std::vector<Polar_entry> polar_coordinates(const Context& c, int s,
+                                                  const Tangent_frame& frame,
+                                                  const Star_gradient& star,
+                                                  const std::vector<std::size_t>& order,
+                                                  const Workspace& ws) {
+  const Angle_estimator estimator = c.factors.angle_estimator;
+  const bool linear = is_linear_in_heat(estimator);
+  const std::size_t width = star_columns(c, star);
+  const std::size_t boundary_width = boundary_star_columns(c, star);
+  const Near_source_zone zone = near_source_zone(c, s, frame.normal);
+  std::vector<double> values(star.vertices.size());
+  std::vector<double> both(width);  // the Neumann and Dirichlet heat, summed
+  // The heat directions of the patch vertices (where the blend wants them),
+  // then, for the quadratic fit, their cubic leak removed for all at once.
+  std::vector<std::array<double, 2>> direction(order.size());
+  std::vector<std::array<double, 2>> leaking;
+  std::vector<double> leak_radius;
+  std::vector<std::size_t> leaking_at;
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const std::size_t i = order[p];
+    const int v = ws.region[i];
+    const double* h = ws.star.heat.data() + p * width;
+    // The heat from v at the source: its own column for a logarithmic
+    // estimator, the source heat of step 2 otherwise.
+    double at_source = linear ? ws.region_heat[i] : h[0];
+    if (ws.meets_boundary) {
+      const double* dirichlet = ws.boundary_star.heat.data() + p * boundary_width;
+      for (std::size_t k = 0; k < width; ++k) both[k] = h[k] + dirichlet[k];
+      at_source = linear ? at_source + dirichlet[2] : both[0];
+      h = both.data();
+    }
+    if (!(std::abs(at_source) > std::numeric_limits<double>::min()))
+      throw Computation_error("heat diffusion underflows at vertex " +
+                              std::to_string(c.mesh.to_original(v)) + " (distance " +
+                              std::to_string(ws.potential[i]) +
+                              "); increase the time factor or request a smaller patch");
+    if (v == s || zone.heat_weight(ws.potential[i]) == 0.0) continue;  // no heat direction needed
+    direction[p] = heat_direction(c, at_source, star, h, values);
+    if (estimator == Angle_estimator::heat_quadratic_fit && at_source > 0) {
+      leaking.push_back(direction[p]);
+      leak_radius.push_back(std::max(ws.potential[i], c.mesh.mean_edge_length));
+      leaking_at.push_back(p);
+    }
+  }
+  remove_cubic_leak(star, leaking.data(), leak_radius.data(), leaking.size(), c.factors.time_step);
+  for (std::size_t k = 0; k < leaking_at.size(); ++k) direction[leaking_at[k]] = leaking[k];
+
+  std::vector<Polar_entry> entries;
+  entries.reserve(order.size());
+  const Source_one_ring ring = source_one_ring(c.mesh, s, frame);
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const std::size_t i = order[p];
+    const int v = ws.region[i];
+    if (v == s) continue;
+    entries.push_back({static_cast<int>(c.mesh.to_original(v)),
+                       blended_distance(c, s, v, ws.potential[i], ring, zone),
+                       polar_angle(c, s, v, ws.potential[i], direction[p], frame, ring, zone)});
+  }
+  return entries;
+}
+
+}  // namespace heat
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_HEAT_POLAR_COORDINATES_H

@@ -1,0 +1,104 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_INTERNAL_HEAT_QUERY_WORKSPACE_H
+#define EXPMAP_INTERNAL_HEAT_QUERY_WORKSPACE_H
+
+// What the phases of a heat query read (the context) and write (the
+// workspace). A workspace is O(n) memory reused query after query, one per
+// thread (see Workspace_pool).
+
+#include <expmap/Heat_options.h>
+#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Region_growing.h>
+#include <expmap/internal/heat/Heat_factors.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace expmap {
+namespace internal {
+namespace heat {
+
+/// The read-only inputs of every phase.
+struct Context {
+  const Mesh_arrays& mesh;  // renumbered along locality_order
+  const Heat_factors& factors;
+  const Heat_options& options;
+};
+
+/// A star solve's right-hand side and the heat from the star on the rows
+/// asked for, row-major.
+struct Star_solve {
+  std::vector<Rhs_entry> rhs;
+  std::vector<double> heat;
+};
+
+/// The widest block a star solve (step 6) needs: two columns for the
+/// estimators linear in the heat (three with the boundary's Dirichlet
+/// column), else one per star vertex, which the solver splits into blocks
+/// of its widest kernel. The solver workspace's block is sized by it.
+inline int star_solve_width(const Heat_factors& factors, bool boundary) {
+  return is_linear_in_heat(factors.angle_estimator) ? (boundary ? 3 : 2)
+                                                     : Localized_cholesky_solver::max_block_width;
+}
+
+/// The state of one query, phase by phase.
+struct Workspace {
+  Workspace(const Heat_factors& factors, std::size_t n)
+      : heat_solve(factors.heat.size(), factors.heat.number_of_supernodes(),
+                   star_solve_width(factors, false)),
+        poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1),
+        region_star_solve(0, 0, star_solve_width(factors, false)),
+        tentative(n) {
+    if (factors.has_boundary())
+      boundary_heat_solve = Localized_cholesky_solver::Workspace(
+          factors.boundary_heat.size(), factors.boundary_heat.number_of_supernodes(),
+          star_solve_width(factors, true));
+    in_region.resize(n);
+    seen.resize(n);
+    wanted.resize(n);
+    map_position.resize(n);
+  }
+  Localized_cholesky_solver::Workspace heat_solve, poisson_solve, boundary_heat_solve;
+  // The second thread's (query_threads 2): sized by the first solve that
+  // uses it, so a workspace of a parallel batch, whose queries run on one
+  // thread each, never holds it.
+  Localized_cholesky_solver::Workspace region_star_solve;
+  Vertex_marks in_region, seen, wanted;
+  Vertex_marks map_position;  // assemble_local_map's scratch
+  std::vector<double> tentative;
+
+  // Steps 1 and 2: candidates, source heat, region.
+  std::vector<int> candidates;         // vertices the heat is solved for
+  std::size_t breadth_first_head = 0;  // where their breadth-first search can go on
+  std::vector<double> heat;            // heat from the source on the candidates
+  bool prune = false;                  // whether this query's heat solves are pruned
+  double heat_drop_below = 0;          // the source heat's pruning threshold (0: not pruned)
+  std::vector<int> region;             // the hottest candidates: where distance is integrated
+  std::vector<std::size_t> heat_row;   // row of each region vertex in `heat`, ascending
+  std::vector<double> region_heat;     // `heat` at each region vertex
+  std::vector<int> region_by_index;    // the region in vertex order (memory order)
+  std::vector<int> cut_short_at;       // hottest candidates on the candidates' edge
+  // Scratch of those steps.
+  std::vector<std::size_t> rows;
+  std::vector<double> heat_values;
+  std::vector<int> sort_scratch, frontier, next_frontier;
+  std::vector<Rhs_entry> rhs;
+
+  // Steps 3 and 4: divergence and distance on the region.
+  std::vector<double> divergence, potential;
+
+  // Steps 5 and 6: the patch and its star solves.
+  std::vector<int> patch;     // the patch vertices, nearest first
+  Star_solve star;            // the star solve on the patch
+  Star_solve boundary_star;   // its Dirichlet twin, where the region meets a boundary
+  bool meets_boundary = false;
+  Star_solve region_star;     // the star solve of a second thread, on the region
+};
+
+}  // namespace heat
+}  // namespace internal
+}  // namespace expmap
+
+#endif  // EXPMAP_INTERNAL_HEAT_QUERY_WORKSPACE_H
