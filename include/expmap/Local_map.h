@@ -35,13 +35,6 @@ struct Local_map {
   std::array<double, 3> axis_u{};          ///< unit tangent axis of angle 0
   std::array<double, 3> axis_v{};          ///< unit tangent axis of angle pi/2
   Solve_statistics statistics;             ///< work of the localized solves (heat method)
-  /// Where the map is one-to-one: the largest r such that no patch triangle
-  /// with every corner nearer than r to the source is flipped or collapsed
-  /// in (u, v) (`is_flipped()`). That is the smallest, over the flipped
-  /// triangles, of their farthest corner's distance, or the largest distance
-  /// in the map if none is flipped. Every method fills it;
-  /// `Query_options::trim_folds` cuts the map to that disk.
-  double fold_free_radius = 0;
 
   /// Number of patch vertices (the source included).
   std::size_t size() const { return vertices.size(); }

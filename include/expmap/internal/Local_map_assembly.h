@@ -3,17 +3,12 @@
 #ifndef EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 #define EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 
-#include <expmap/Fold_free_radius.h>
 #include <expmap/Local_map.h>
-#include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Nearest_first.h>
-#include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Tangent_frame.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstddef>
 #include <vector>
 
 namespace expmap {
@@ -37,59 +32,14 @@ inline double wrap_angle(double a) {
   return a;
 }
 
-/// The fold-free disk of `map`, which must be nearest first, from the faces
-/// of `mesh`: the same triangles `patch_triangles()` finds in the user's
-/// mesh, and the same disk as `fold_free_radius()`. `map.indices` are the
-/// user's indices; `mesh` may be renumbered. `position`, sized to the mesh,
-/// is scratch (a hash map would cost a good part of a small query).
-///
-/// Each face is tested when its farthest corner comes up, so the first
-/// flipped one found is the nearest fold and ends the search.
-template <class VertexDescriptor>
-Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDescriptor>& map,
-                              Vertex_marks& position) {
-  Fold_free_disk disk;
-  if (map.size() == 0) return disk;
-  disk.radius = map.distance.back();
-  position.next_query();
-  std::vector<std::array<double, 2>> uv;  // each vertex's once: sines and cosines are the cost
-  uv.reserve(map.size());
-  const auto uv_of = [&](std::size_t i) { return uv[i]; };
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    const int v = mesh.from_original(map.indices[i]);
-    position.mark(v, static_cast<int>(i));
-    uv.push_back(map.uv(i));
-    for (int p = mesh.vertex_face_start[v]; p < mesh.vertex_face_start[v + 1]; ++p) {
-      const std::array<int, 3>& face = mesh.face[mesh.vertex_face[p]];
-      std::array<std::size_t, 3> corner{};
-      bool earlier = true;  // every corner at position i or before
-      for (int k = 0; k < 3 && earlier; ++k) {
-        earlier = position.is_marked(face[k]);
-        if (earlier) corner[k] = static_cast<std::size_t>(position.value(face[k]));
-      }
-      if (earlier && !(signed_uv_area2(uv_of, corner) > 0)) {
-        disk.radius = map.distance[i];
-        disk.folds = true;
-        return disk;
-      }
-    }
-  }
-  return disk;
-}
-
 /// Fills a `Local_map` the way every method reports it: the source first
 /// (r = 0, theta = 0), then the entries nearest first (ties by vertex
-/// index, so results do not depend on traversal order), with its fold-free
-/// radius, cut to that disk if `trim_folds`. Entries for the source itself
-/// are dropped. `entries` is sorted in place; their vertices and `source`
-/// are indices of the user's mesh, which `mesh` stores (maybe renumbered).
-/// `position` is scratch for `fold_free_disk()`.
+/// index, so results do not depend on traversal order). Entries for the
+/// source itself are dropped. `entries` is sorted in place.
 template <class VertexDescriptor>
-Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
-                                               std::vector<Polar_entry>& entries,
+Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,
-                                               const Tangent_frame& frame, bool trim_folds,
-                                               Vertex_marks& position) {
+                                               const Tangent_frame& frame) {
   auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
@@ -116,11 +66,6 @@ Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int sour
   add(source, 0.0, 0.0);
   for (const Polar_entry& e : entries)
     if (e.vertex != source) add(e.vertex, e.distance, wrap_angle(e.angle));
-  const Fold_free_disk disk = fold_free_disk(mesh, map, position);
-  if (trim_folds)
-    trim_to_disk(map, disk);
-  else
-    map.fold_free_radius = disk.radius;
   return map;
 }
 

@@ -58,7 +58,6 @@ struct Workspace {
     in_region.resize(n);
     seen.resize(n);
     wanted.resize(n);
-    map_position.resize(n);
   }
   Localized_cholesky_solver::Workspace heat_solve, poisson_solve, boundary_heat_solve;
   // The second thread's (query_threads 2): sized by the first solve that
@@ -66,7 +65,6 @@ struct Workspace {
   // thread each, never holds it.
   Localized_cholesky_solver::Workspace region_star_solve;
   Vertex_marks in_region, seen, wanted;
-  Vertex_marks map_position;  // assemble_local_map's scratch
   std::vector<double> tentative;
 
   // Steps 1 and 2: candidates, source heat, region.
