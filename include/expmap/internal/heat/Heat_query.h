@@ -88,7 +88,6 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
   // tangent frame.
   const Star_gradient star = source_star_gradient(c, s, frame);
   const auto component = static_cast<std::size_t>(c.mesh.component_size[c.mesh.component[s]]);
-  const double margin = patch_margin(c);
   for (double growth = c.options.region_growth;; growth *= 2) {
     const bool retry = growth > c.options.region_growth;
     if (retry) ++stats.region_retries;
@@ -122,7 +121,7 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
     // Step 5: the patch, clear of the region's edge, or a retry on a
     // region twice as large.
     const std::vector<std::size_t> order = select_patch(patch, target, wanted, ws);
-    if (!whole_component && !patch_is_complete(c, patch, target, wanted, order, margin, ws))
+    if (!whole_component && !patch_is_complete(c, patch, target, wanted, order, ws))
       continue;
     ws.patch.clear();
     for (const std::size_t i : order) ws.patch.push_back(ws.region[i]);

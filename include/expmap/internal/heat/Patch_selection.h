@@ -101,12 +101,12 @@ inline double patch_margin(const Context& c) {
 }
 
 // Whether the patch at region positions `order` is the one asked for: all
-// of it found, and `margin` times its reach inside the region (a radius
-// patch then holds every vertex within its radius).
+// of it found, and patch_margin times its reach inside the region (a
+// radius patch then holds every vertex within its radius).
 inline bool patch_is_complete(const Context& c, const Patch& patch, std::size_t target,
                               const std::vector<int>& wanted,
-                              const std::vector<std::size_t>& order, double margin,
-                              const Workspace& ws) {
+                              const std::vector<std::size_t>& order, const Workspace& ws) {
+  const double margin = patch_margin(c);
   const double reach = patch.kind() == Patch::Kind::geodesic_radius
                            ? patch.radius()
                            : (order.empty() ? 0.0 : ws.potential[order.back()]);
