@@ -46,7 +46,7 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --factor-precision P     double | single: Heat_options::factor_precision
                            (default: double, the library's; the stream
                            floor counts every factor entry as a double)
-  --query-threads N        1 | 2: Heat_options::query_threads, the threads
+  --query-threads N        1 | 2: Heat_query_options::query_threads, the threads
                            one heat query runs on (default 1; the speed
                            targets are for one)
   --poisson-compression T  Heat_options::poisson_compression_tolerance

@@ -18,7 +18,7 @@
 // the fastest of the repeats drops interruptions; medians over the sources
 // are then medians of these per-source times.
 //
-// heat-full is the whole-mesh cost: Heat_options::region_growth cannot turn
+// heat-full is the whole-mesh cost: Heat_query_options::region_growth cannot turn
 // the localization off, so the same object is queried with
 // Patch::fraction(1), which solves over the whole component (both factors,
 // every column) and maps all of it -- what a non-localized solver has to do
@@ -334,7 +334,7 @@ class Benchmark {
       m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
     if (options.poisson_compression >= 0)
       m_heat_options.poisson_compression_tolerance = options.poisson_compression;
-    m_heat_options.query_threads = options.query_threads;
+    m_heat_query.query_threads = options.query_threads;
   }
 
   void run(const std::vector<Mesh_job>& jobs) {
@@ -412,7 +412,7 @@ class Benchmark {
     std::vector<Query_method> turns;
     for (const std::string& method : m_options.methods) {
       if (method == "heat") {
-        turns.push_back(query_method(method, *heat));
+        turns.push_back(query_method(method, *heat, m_heat_query));
       } else if (method == "dem") {
         dem = construct_baseline<Dem>(method, mesh);
         turns.push_back(query_method(method, *dem));
@@ -451,7 +451,7 @@ class Benchmark {
                    sources.size());
       const std::vector<std::size_t> full_sources(
           sources.begin(), sources.begin() + static_cast<std::ptrdiff_t>(count));
-      std::vector<Query_record> r = time_interleaved({query_method("heat-full", *heat)},
+      std::vector<Query_record> r = time_interleaved({query_method("heat-full", *heat, m_heat_query)},
                                                      full_sources, {1.0}, m_options.repeats);
       measure_stream_floors(r, "heat-full", floor);
       floor.release();
@@ -498,9 +498,10 @@ class Benchmark {
   }
 
   template <class Method>
-  static Query_method query_method(const std::string& name, const Method& method) {
-    return {name, [&method](std::size_t source, const expmap::Patch& patch) {
-              return method.compute_by_index(source, patch);
+  static Query_method query_method(const std::string& name, const Method& method,
+                                   const typename Method::Query& query = {}) {
+    return {name, [&method, query](std::size_t source, const expmap::Patch& patch) {
+              return method.compute_by_index(source, patch, query);
             }};
   }
 
@@ -695,6 +696,7 @@ class Benchmark {
 
   const Bench_options& m_options;
   expmap::Heat_options m_heat_options;
+  expmap::Heat_query_options m_heat_query;
   std::ofstream m_csv, m_stats, m_detail;
   std::vector<Mesh_statistics> m_mesh_statistics;
   std::vector<Summary_row> m_rows;

@@ -68,9 +68,9 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // Precomputes with `make()` and answers one query, timing both: the two
 // numbers a user of a precompute-once method cares about.
-template <class Make>
+template <class Make, class Query>
 Run timed_run(Make make, Mesh::Vertex_index source, const expmap::Patch& patch,
-              const expmap::Query_options& query) {
+              const Query& query) {
   Run run;
   auto start = std::chrono::steady_clock::now();
   const auto method = make();
@@ -97,10 +97,24 @@ expmap::Heat_options heat_options(const Compute_arguments& a) {
     options.factor_precision = *a.factor_precision == "single"
                                    ? expmap::Factor_precision::single_precision
                                    : expmap::Factor_precision::double_precision;
-  if (a.angles) options.angle_estimator = *a.angles;
-  if (a.near_source_blend) options.near_source_blend = *a.near_source_blend;
-  if (a.query_threads) options.query_threads = *a.query_threads == "2" ? 2 : 1;
   return options;
+}
+
+// The settings of one query: those all methods share, and the heat
+// method's own.
+template <class Method_class>
+typename Method_class::Query query_settings(const Compute_arguments&,
+                                            const expmap::Query_options& shared) {
+  return shared;
+}
+template <>
+expmap::Heat_query_options query_settings<Heat>(const Compute_arguments& a,
+                                                const expmap::Query_options& shared) {
+  expmap::Heat_query_options query(shared);
+  if (a.angles) query.angle_estimator = *a.angles;
+  if (a.near_source_blend) query.near_source_blend = *a.near_source_blend;
+  if (a.query_threads) query.query_threads = *a.query_threads == "2" ? 2 : 1;
+  return query;
 }
 
 // How a method is built from the command line: from the mesh alone, or
@@ -123,6 +137,7 @@ std::string settings_description(const Compute_arguments&) {
 template <>
 std::string settings_description<Heat>(const Compute_arguments& a) {
   const expmap::Heat_options options = heat_options(a);
+  const expmap::Heat_query_options query = query_settings<Heat>(a, {});
   std::ostringstream d;
   // Short enough for the SVG caption's one line.
   d << "heat (m = " << options.time_factor;
@@ -132,10 +147,10 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
     << (options.factor_precision == expmap::Factor_precision::single_precision
             ? ", single-precision factors"
             : "")
-    << (options.query_threads > 1 ? ", 2 threads per query" : "")
+    << (query.query_threads > 1 ? ", 2 threads per query" : "")
     << ", "
-    << expmap::to_string(options.angle_estimator) << " angles, chords "
-    << options.near_source_blend.begin << "h to " << options.near_source_blend.end
+    << expmap::to_string(query.angle_estimator) << " angles, chords "
+    << query.near_source_blend.begin << "h to " << query.near_source_blend.end
     << "h scaled by the bend)";
   return d.str();
 }
@@ -143,7 +158,8 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
 template <class Method_class>
 Run run_one(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index source,
             const expmap::Patch& patch, const expmap::Query_options& query) {
-  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch, query);
+  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch,
+                      query_settings<Method_class>(a, query));
   run.description = settings_description<Method_class>(a);
   return run;
 }
@@ -249,7 +265,8 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a,
     const std::size_t chunk = std::min(sources.size() - done,
                                        rows_per_map ? std::max<std::size_t>(64, rows_in_flight / rows_per_map) : 64);
     const std::vector<std::size_t> part(sources.begin() + done, sources.begin() + done + chunk);
-    const auto result = method.compute_many_by_index(part, patch, options, query);
+    const auto result =
+        method.compute_many_by_index(part, patch, options, query_settings<Method_class>(a, query));
     expmap_cli::Batch_table table;
     for (std::size_t i = 0; i < part.size(); ++i) {
       table.append(part[i], result.maps[i]);

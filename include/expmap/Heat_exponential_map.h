@@ -64,10 +64,12 @@ template <class TriangleMesh, class VertexPointMap = CGAL::Default,
           class Solver = Cholmod_solver>
 class Heat_exponential_map
     : public internal::Method_front<Heat_exponential_map<TriangleMesh, VertexPointMap, Solver>,
-                                    TriangleMesh, VertexPointMap> {
-  using Front = internal::Method_front<Heat_exponential_map, TriangleMesh, VertexPointMap>;
+                                    TriangleMesh, VertexPointMap, Heat_query_options> {
+  using Front = internal::Method_front<Heat_exponential_map, TriangleMesh, VertexPointMap,
+                                       Heat_query_options>;
 
  public:
+  using typename Front::Query;
   using typename Front::Result;
   using typename Front::vertex_descriptor;
   using typename Front::Vertex_point_map;
@@ -93,28 +95,21 @@ class Heat_exponential_map
     m_factors = internal::heat::factor_heat_operators<Solver>(m_indexed.arrays, m_options);
     // One workspace ready for the first query: touching its O(n) memory for
     // the first time costs page faults that belong to the precomputation.
-    // With a second thread per query, its solver workspace too (one query
-    // at a time is what that option is for).
-    m_workspaces.acquire([this] {
-      auto ws = make_workspace();
-      if (m_options.query_threads > 1)
-        ws->region_star_solve = internal::Localized_cholesky_solver::Workspace(
-            m_factors.heat.size(), m_factors.heat.number_of_supernodes(),
-            internal::heat::star_solve_width(m_factors, false));
-      return ws;
-    });
+    m_workspaces.acquire([this] { return make_workspace(); });
   }
 
   /// Geodesic polar coordinates around the vertex of index `source` in
   /// `vertices(tm)` for the vertices of `patch`; `compute()` takes a vertex
   /// descriptor, `compute_many()` and `compute_many_by_index()` many sources.
   /// \throws Invalid_input if the index is out of range, the source is
-  ///         isolated or the patch names vertices out of range or outside
-  ///         the source's component.
+  ///         isolated, the patch names vertices out of range or outside
+  ///         the source's component, or a setting of `query` is out of
+  ///         range.
   /// \throws Computation_error if heat underflows inside the patch (choose a
   ///         larger time factor or a smaller patch).
   Result compute_by_index(std::size_t source, const Patch& patch,
-                          const Query_options& query = {}) const {
+                          const Query& query = {}) const {
+    const internal::heat::Context c = context(checked(query));
     const internal::Mesh_arrays& mesh = m_indexed.arrays;
     const int s = internal::checked_source(mesh, source);
     std::optional<internal::Vector3> reference;
@@ -125,9 +120,10 @@ class Heat_exponential_map
                                         ? internal::checked_vertex_set(mesh, patch, s)
                                         : std::vector<int>{};
     auto ws = m_workspaces.acquire([this] { return make_workspace(); });
+    ws->fit_star_solves(m_factors, c.estimator);
     Solve_statistics statistics;
     std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
-        context(), s, frame, patch, target, wanted, *ws, statistics);
+        c, s, frame, patch, target, wanted, *ws, statistics);
     Result result = internal::assemble_local_map(static_cast<int>(mesh.to_original(s)), entries,
                                                  m_indexed.descriptors, frame);
     result.statistics = statistics;
@@ -138,16 +134,18 @@ class Heat_exponential_map
   double time_step() const { return m_factors.time_step; }
   /// Mean edge length h of the input mesh.
   double mean_edge_length() const { return m_indexed.arrays.mean_edge_length; }
-  /// The near-source blend a query from the vertex of index `source` uses,
-  /// in mean edge lengths like `Heat_options::near_source_blend`: the
-  /// option's, scaled so that the blend ends where the surface normal has
-  /// turned by `blend_normal_turn` (by at most `max_near_source_widening`).
-  /// \throws Invalid_input if the index is out of range or the source is
-  ///         isolated.
-  Near_source_blend near_source_blend_at(std::size_t source) const {
+  /// The near-source blend a query with settings `query` from the vertex
+  /// of index `source` uses, in mean edge lengths like
+  /// `Heat_query_options::near_source_blend`: the query's, scaled so that
+  /// the blend ends where the surface normal has turned by
+  /// `blend_normal_turn` (by at most `max_near_source_widening`).
+  /// \throws Invalid_input if the index is out of range, the source is
+  ///         isolated or a setting of `query` is out of range.
+  Near_source_blend near_source_blend_at(std::size_t source, const Query& query = {}) const {
+    const internal::heat::Context c = context(checked(query));
     const int s = internal::checked_source(m_indexed.arrays, source);
-    const internal::Near_source_zone zone = internal::heat::near_source_zone(
-        context(), s, internal::vertex_normal(m_indexed.arrays, s));
+    const internal::Near_source_zone zone =
+        internal::heat::near_source_zone(c, s, internal::vertex_normal(m_indexed.arrays, s));
     const double h = m_indexed.arrays.mean_edge_length;
     return {zone.begin / h, zone.end / h};
   }
@@ -175,10 +173,13 @@ class Heat_exponential_map
   using Front::number_of_vertices;
   /// The settings the object was built with.
   const Heat_options& options() const { return m_options; }
-  /// The estimator the queries use: `options().angle_estimator`, except
+  /// The estimator a query asking for `requested` uses: `requested`, except
   /// that `heat_quadratic_fit` at a time factor below
   /// `min_time_factor_of_two_ring_fit` becomes `log_heat_quadratic_fit`.
-  Angle_estimator angle_estimator() const { return m_factors.angle_estimator; }
+  Angle_estimator angle_estimator(
+      Angle_estimator requested = Heat_query_options().angle_estimator) const {
+    return internal::heat::angle_estimator_at(requested, m_options.time_factor);
+  }
 
   /// Below this time factor the heat falls by more than a factor e across
   /// the two-ring, beyond what `heat_quadratic_fit` models.
@@ -193,7 +194,9 @@ class Heat_exponential_map
   static constexpr double blend_normal_turn = internal::heat::blend_normal_turn;
 
  private:
-  internal::heat::Context context() const { return {m_indexed.arrays, m_factors, m_options}; }
+  internal::heat::Context context(const Query& query) const {
+    return {m_indexed.arrays, m_factors, m_options, query};
+  }
   std::unique_ptr<internal::heat::Workspace> make_workspace() const {
     return std::make_unique<internal::heat::Workspace>(m_factors, number_of_vertices());
   }
@@ -211,7 +214,7 @@ class Heat_exponential_map
 template <class TriangleMesh>
 Local_map<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> estimate_exponential_map(
     const TriangleMesh& tm, typename boost::graph_traits<TriangleMesh>::vertex_descriptor source,
-    const Patch& patch, const Heat_options& options = {}, const Query_options& query = {}) {
+    const Patch& patch, const Heat_options& options = {}, const Heat_query_options& query = {}) {
   return Heat_exponential_map<TriangleMesh>(tm, options).compute(source, patch, query);
 }
 

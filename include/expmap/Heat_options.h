@@ -4,12 +4,14 @@
 #define EXPMAP_HEAT_OPTIONS_H
 
 /// \file Heat_options.h
-/// The settings of `Heat_exponential_map`. The measurements behind the
-/// defaults are in doc/results.md and doc/performance.md.
+/// The settings of `Heat_exponential_map`: its precomputation's and its
+/// queries'. The measurements behind the defaults are in doc/results.md and
+/// doc/performance.md.
 
 #include <expmap/Angle_estimator.h>
 #include <expmap/Errors.h>
 #include <expmap/Factor_precision.h>
+#include <expmap/Patch.h>
 
 #include <cmath>
 #include <string>
@@ -46,13 +48,9 @@ enum class Poisson_regularization {
 };
 
 /// \ingroup PkgExpmapRef
-/// The settings of a `Heat_exponential_map`. The first group changes the
-/// factorizations and is read by the constructor; the second tunes the
-/// queries the object answers.
+/// The precomputation's settings of a `Heat_exponential_map`: they change
+/// the operators and factorizations its constructor builds.
 struct Heat_options {
-  /// \name Precomputation
-  /// @{
-
   /// Diffusion time t = time_factor * h^2, h the mean edge length. Larger
   /// values give smoother maps; smaller ones distances closer to geodesic.
   double time_factor = 10.0;
@@ -70,10 +68,16 @@ struct Heat_options {
   /// separators (meshes above about 100k vertices): fewer entries read per
   /// query. 0 keeps every block dense. At most 1e-10.
   double poisson_compression_tolerance = 1e-14;
-  /// @}
+};
 
-  /// \name Queries
-  /// @{
+/// \ingroup PkgExpmapRef
+/// The settings of one heat query: those all methods share
+/// (`Query_options`) and the heat method's own. Converts from
+/// `Query_options`, with the heat method's settings at their defaults.
+struct Heat_query_options : Query_options {
+  Heat_query_options() = default;
+  /// The shared settings `shared`, the heat method's at their defaults.
+  Heat_query_options(const Query_options& shared) : Query_options(shared) {}
 
   /// A query solves on a region this many times larger (in vertices) than
   /// its patch; the Poisson step's cut-off error stays in the margin. At
@@ -88,11 +92,10 @@ struct Heat_options {
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   /// Geometric directions next to the source, heat directions beyond.
   Near_source_blend near_source_blend;
-  /// 1 or 2. With 2 a query's star solve runs on a second thread beside
+  /// 1 or 2. With 2 the query's star solve runs on a second thread beside
   /// the distance: for one query at a time, as in an interactive tool
   /// (`compute_many()` already keeps every core busy).
   int query_threads = 1;
-  /// @}
 };
 
 /// \ingroup PkgExpmapRef
@@ -102,24 +105,32 @@ inline const Heat_options& checked(const Heat_options& options) {
   if (!(options.time_factor > 0) || !std::isfinite(options.time_factor))
     throw Invalid_input("the time factor must be positive and finite (got " +
                         std::to_string(options.time_factor) + ")");
-  const Near_source_blend& blend = options.near_source_blend;
-  if (!(blend.begin >= 0) || !(blend.end >= blend.begin) || !std::isfinite(blend.end))
-    throw Invalid_input("near_source_blend must satisfy 0 <= begin <= end < infinity (got begin " +
-                        std::to_string(blend.begin) + ", end " + std::to_string(blend.end) + ")");
-  if (!(options.pruning_tolerance >= 0) || !(options.pruning_tolerance <= 1e-10))
-    throw Invalid_input("pruning_tolerance must be in [0, 1e-10] (got " +
-                        std::to_string(options.pruning_tolerance) + ")");
   if (!(options.poisson_compression_tolerance >= 0) ||
       !(options.poisson_compression_tolerance <= 1e-10))
     throw Invalid_input("poisson_compression_tolerance must be in [0, 1e-10] (got " +
                         std::to_string(options.poisson_compression_tolerance) + ")");
-  if (options.query_threads != 1 && options.query_threads != 2)
-    throw Invalid_input("query_threads must be 1 or 2 (got " +
-                        std::to_string(options.query_threads) + ")");
-  if (!(options.region_growth >= 1) || !std::isfinite(options.region_growth))
-    throw Invalid_input("region_growth must be at least 1 (got " +
-                        std::to_string(options.region_growth) + ")");
   return options;
+}
+
+/// \ingroup PkgExpmapRef
+/// `query` if every heat setting is in its range (the shared ones are
+/// checked where they are used).
+/// \throws Invalid_input naming the first setting that is not.
+inline const Heat_query_options& checked(const Heat_query_options& query) {
+  const Near_source_blend& blend = query.near_source_blend;
+  if (!(blend.begin >= 0) || !(blend.end >= blend.begin) || !std::isfinite(blend.end))
+    throw Invalid_input("near_source_blend must satisfy 0 <= begin <= end < infinity (got begin " +
+                        std::to_string(blend.begin) + ", end " + std::to_string(blend.end) + ")");
+  if (!(query.pruning_tolerance >= 0) || !(query.pruning_tolerance <= 1e-10))
+    throw Invalid_input("pruning_tolerance must be in [0, 1e-10] (got " +
+                        std::to_string(query.pruning_tolerance) + ")");
+  if (query.query_threads != 1 && query.query_threads != 2)
+    throw Invalid_input("query_threads must be 1 or 2 (got " +
+                        std::to_string(query.query_threads) + ")");
+  if (!(query.region_growth >= 1) || !std::isfinite(query.region_growth))
+    throw Invalid_input("region_growth must be at least 1 (got " +
+                        std::to_string(query.region_growth) + ")");
+  return query;
 }
 
 }  // namespace expmap

@@ -22,7 +22,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <climits>
+#include <limits>
 #include <fstream>
 #include <memory>
 #include <numeric>
@@ -168,9 +170,9 @@ expmap::Patch mesh_patch(const Bound_method<Method>& b, std::size_t source,
   return expmap::Patch::vertex_set(std::move(vertices));
 }
 
-/// The query options from `reference`: None or 3 numbers (the library
-/// checks that they are finite and not along the normal).
-expmap::Query_options query_argument(py::handle reference) {
+/// The shared query options from `reference`: None or 3 numbers (the
+/// library checks that they are finite and not along the normal).
+expmap::Query_options shared_query_argument(py::handle reference) {
   expmap::Query_options query;
   if (reference.is_none()) return query;
   py::array array = py::array::ensure(reference);
@@ -198,6 +200,72 @@ E enum_argument(py::handle value, const char* option) {
   for (auto item : members) known += (known.empty() ? "" : ", ") + item.first.cast<std::string>();
   throw expmap::Invalid_input(std::string(option) + " must be one of " + known + " (got " +
                               py::repr(value).cast<std::string>() + ")");
+}
+
+/// A float from any Python real number.
+double number_argument(py::handle value, const char* name) {
+  const double x = PyFloat_AsDouble(value.ptr());
+  if (x == -1.0 && PyErr_Occurred()) {
+    PyErr_Clear();
+    throw expmap::Invalid_input(std::string(name) + " must be a number (got " +
+                                py::repr(value).cast<std::string>() + ")");
+  }
+  return x;
+}
+
+/// The TypeError Python raises for a keyword a function does not take.
+[[noreturn]] void unexpected_keyword(const char* function, py::handle key) {
+  throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" +
+                       py::str(key).cast<std::string>() + "'");
+}
+
+/// The settings of one query of `Method`: the shared ones from `reference`;
+/// the methods without settings of their own take no other keyword.
+template <class Method>
+typename Method::Query query_argument(const char* function, py::handle reference,
+                                      const py::kwargs& settings) {
+  for (auto item : settings) unexpected_keyword(function, item.first);
+  return shared_query_argument(reference);
+}
+
+/// Whether `key` names one of the heat method's query settings.
+bool is_heat_query_setting(const std::string& key) {
+  for (const char* name : {"region_growth", "pruning_tolerance", "angle_estimator",
+                           "near_source_blend", "query_threads"})
+    if (key == name) return true;
+  return false;
+}
+
+/// The heat method's query settings (Heat_query_options) by keyword.
+template <>
+expmap::Heat_query_options query_argument<expmap::Heat_exponential_map<Mesh>>(
+    const char* function, py::handle reference, const py::kwargs& settings) {
+  expmap::Heat_query_options query(shared_query_argument(reference));
+  for (auto item : settings) {
+    const std::string key = py::str(item.first);
+    const py::handle value = item.second;
+    if (key == "region_growth") {
+      query.region_growth = number_argument(value, "region_growth");
+    } else if (key == "pruning_tolerance") {
+      query.pruning_tolerance = number_argument(value, "pruning_tolerance");
+    } else if (key == "angle_estimator") {
+      query.angle_estimator = enum_argument<expmap::Angle_estimator>(value, "angle_estimator");
+    } else if (key == "near_source_blend") {
+      if (!py::isinstance<py::sequence>(value) || py::isinstance<py::str>(value) ||
+          py::len(value) != 2)
+        throw expmap::Invalid_input("near_source_blend must be (begin, end) (got " +
+                                    py::repr(value).cast<std::string>() + ")");
+      const py::sequence pair = py::reinterpret_borrow<py::sequence>(value);
+      query.near_source_blend = {number_argument(pair[0], "near_source_blend"),
+                                 number_argument(pair[1], "near_source_blend")};
+    } else if (key == "query_threads") {
+      query.query_threads = static_cast<int>(std::min<std::size_t>(
+          index_argument(value, "query_threads"), std::numeric_limits<int>::max()));
+    } else {
+      unexpected_keyword(function, item.first);
+    }
+  }
+  return expmap::checked(query);
 }
 
 /// The namedtuple type `expmap.BatchMap` (made once, in the module's init;
@@ -258,11 +326,11 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute",
       [](const Bound& b, py::handle source, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference) {
+         py::handle reference, const py::kwargs& settings) {
         const std::size_t s = source_argument(b, source);
         const expmap::Patch patch =
             mesh_patch(b, s, patch_argument(b, radius, fraction, vertices, vertex_set));
-        const expmap::Query_options query = query_argument(reference);
+        const typename Method::Query query = query_argument<Method>("compute", reference, settings);
         Map map;
         {
           py::gil_scoped_release release;
@@ -287,11 +355,12 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference, py::handle threads_object) {
+         py::handle reference, py::handle threads_object, const py::kwargs& settings) {
         const Index_array checked = checked_indices(sources_object, "sources", b.rows);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
-        const expmap::Query_options query = query_argument(reference);
+        const typename Method::Query query =
+            query_argument<Method>("compute_many", reference, settings);
         const std::size_t threads = index_argument(threads_object, "threads");
         if (threads > 4096)
           throw expmap::Invalid_input("threads must be at most 4096 (got " +
@@ -369,12 +438,17 @@ void bind_heat(py::module_& m) {
       "    local = heat.compute(0, fraction=0.05)\n"
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
-                    py::handle laplacian,
-                    py::handle vertex_area, py::handle factor_precision,
-                    py::handle regularization, double region_growth,
-                    double pruning_tolerance, double poisson_compression_tolerance,
-                    py::handle angle_estimator, std::pair<double, double> near_source_blend,
-                    int query_threads) {
+                    py::handle laplacian, py::handle vertex_area, py::handle factor_precision,
+                    py::handle regularization, double poisson_compression_tolerance,
+                    const py::kwargs& rest) {
+          for (auto item : rest) {
+            const std::string key = py::str(item.first);
+            if (is_heat_query_setting(key))
+              throw py::type_error("HeatExponentialMap() got an unexpected keyword argument '" +
+                                   key + "': it is a query setting, given to compute() and "
+                                   "compute_many()");
+            unexpected_keyword("HeatExponentialMap", item.first);
+          }
           expmap::Heat_options options;
           options.time_factor = time_factor;
           options.laplacian = enum_argument<expmap::Laplacian_mode>(laplacian, "laplacian");
@@ -383,13 +457,7 @@ void bind_heat(py::module_& m) {
               enum_argument<expmap::Factor_precision>(factor_precision, "factor_precision");
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
-          options.region_growth = region_growth;
-          options.pruning_tolerance = pruning_tolerance;
           options.poisson_compression_tolerance = poisson_compression_tolerance;
-          options.angle_estimator =
-              enum_argument<expmap::Angle_estimator>(angle_estimator, "angle_estimator");
-          options.near_source_blend = {near_source_blend.first, near_source_blend.second};
-          options.query_threads = query_threads;
           return bind_to_arrays<Method>(vertices, faces, [&](const Mesh& mesh) {
             return std::make_unique<const Method>(mesh, options);
           });
@@ -400,13 +468,7 @@ void bind_heat(py::module_& m) {
         py::arg("vertex_area") = defaults.vertex_area,
         py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
-        py::arg("region_growth") = defaults.region_growth,
-        py::arg("pruning_tolerance") = defaults.pruning_tolerance,
         py::arg("poisson_compression_tolerance") = defaults.poisson_compression_tolerance,
-        py::arg("angle_estimator") = defaults.angle_estimator,
-        py::arg("near_source_blend") =
-            std::make_pair(defaults.near_source_blend.begin, defaults.near_source_blend.end),
-        py::arg("query_threads") = defaults.query_threads,
         "Precomputes operators and factorizations of the mesh (vertices: float\n"
         "array n x 3; faces: integer array m x 3, made a mesh as for\n"
         "DiscreteExponentialMap).\n\n"
@@ -420,15 +482,16 @@ void bind_heat(py::module_& m) {
         "    about halves their memory and is faster on large meshes, and moves the\n"
         "    map by up to about 4e-7 of its radius.\n"
         "regularization: a PoissonRegularization or its name.\n"
-        "region_growth: a query solves on a region this many times larger than the\n"
-        "    patch (at least 1).\n"
-        "pruning_tolerance: heat solves of small patches of large meshes skip\n"
-        "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
-        "    never).\n"
         "poisson_compression_tolerance: the Poisson factor's large separators\n"
         "    compressed to this relative tolerance, their rows below as truncated\n"
         "    SVDs (in [0, 1e-10]; 0: dense); fewer entries read per query on large\n"
-        "    meshes.\n"
+        "    meshes.\n\n"
+        "compute() and compute_many() take these query settings as keywords too:\n"
+        "region_growth: a query solves on a region this many times larger than the\n"
+        "    patch (at least 1; default 2).\n"
+        "pruning_tolerance: heat solves of small patches of large meshes skip\n"
+        "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
+        "    never; default 1e-12).\n"
         "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
         "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
         "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"
@@ -441,7 +504,8 @@ void bind_heat(py::module_& m) {
         "    the time on patches of 750+ vertices). compute_many on more than one\n"
         "    thread runs a source per thread, each on one, and gives the same maps\n"
         "    bit for bit on any number of threads.\n\n"
-        "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options.");
+        "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options\n"
+        "(a query's settings when it is asked).");
   add_queries(c);
   c.def_property_readonly(
       "time_step", [](const Bound& b) { return b.method->time_step(); },
@@ -451,17 +515,20 @@ void bind_heat(py::module_& m) {
       "Mean edge length h of the mesh.");
   c.def(
       "near_source_blend_at",
-      [](const Bound& b, py::handle source) {
+      [](const Bound& b, py::handle source, const py::kwargs& settings) {
+        const expmap::Heat_query_options query =
+            query_argument<Method>("near_source_blend_at", py::none(), settings);
         const expmap::Near_source_blend blend =
-            b.method->near_source_blend_at(source_argument(b, source));
+            b.method->near_source_blend_at(source_argument(b, source), query);
         return std::make_pair(blend.begin, blend.end);
       },
       py::arg("source"),
-      "near_source_blend_at(source) -> (begin, end)\n\n"
-      "The near-source blend a query from vertex ``source`` uses, in mean edge\n"
-      "lengths: the option's, scaled so that it ends where the surface normal\n"
-      "has turned by 1 rad (at most 1.5x). Raises ValueError for a source out\n"
-      "of range or isolated.");
+      "near_source_blend_at(source, **settings) -> (begin, end)\n\n"
+      "The near-source blend a query from vertex ``source`` with these query\n"
+      "settings (e.g. near_source_blend=(2, 6)) uses, in mean edge lengths: the\n"
+      "setting's, scaled so that it ends where the surface normal has turned by\n"
+      "1 rad (at most 1.5x). Raises ValueError for a source out of range or\n"
+      "isolated.");
 }
 
 }  // namespace

@@ -84,7 +84,7 @@ void check_equals_single_queries(const Method& method, const expmap::Patch& patc
 
 BOOST_AUTO_TEST_SUITE(compute_many)
 
-// Heat_options::query_threads = 2 gives a query a second thread; a batch on
+// Heat_query_options::query_threads = 2 gives a query a second thread; a batch on
 // more than one thread runs each query on one (it keeps the cores busy
 // already), a batch on one thread lets its queries take the second. The
 // second thread's star solve reads more factor entries (it solves the whole
@@ -92,19 +92,19 @@ BOOST_AUTO_TEST_SUITE(compute_many)
 BOOST_AUTO_TEST_CASE(a_parallel_batch_runs_each_heat_query_on_one_thread) {
   Mesh sphere;
   expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(5), sphere);
-  expmap::Heat_options two_threads;
+  expmap::Heat_query_options two_threads;
   two_threads.query_threads = 2;
-  const expmap::Heat_exponential_map<Mesh> one(sphere), two(sphere, two_threads);
+  const expmap::Heat_exponential_map<Mesh> heat(sphere);
   const expmap::Patch patch = expmap::Patch::fraction(0.3);  // a region of 6,000 vertices
   const std::vector<std::size_t> sources{17, 4000, 9000};
   for (unsigned threads : {1u, 2u}) {
     expmap::Batch_options options;
     options.threads = threads;
-    const auto batch = two.compute_many_by_index(sources, patch, options);
+    const auto batch = heat.compute_many_by_index(sources, patch, options, two_threads);
     BOOST_REQUIRE_EQUAL(batch.failures(), 0u);
     for (std::size_t i = 0; i < sources.size(); ++i) {
-      const auto on_one = one.compute_by_index(sources[i], patch);
-      const auto on_two = two.compute_by_index(sources[i], patch);
+      const auto on_one = heat.compute_by_index(sources[i], patch);
+      const auto on_two = heat.compute_by_index(sources[i], patch, two_threads);
       BOOST_TEST(on_two.statistics.factor_entries > on_one.statistics.factor_entries);
       BOOST_TEST(batch.maps[i].statistics.factor_entries ==
                  (threads == 1 ? on_two : on_one).statistics.factor_entries);

@@ -28,9 +28,10 @@ Comparison compare_with_cgal(Surface_mesh& mesh, std::size_t source,
   options.vertex_area = expmap::Vertex_area::barycentric;  // CGAL's mass matrix
   // The heat distance itself: without the source's neighbours at their edge
   // lengths (Near_source_blend), which CGAL does not do.
-  options.near_source_blend = {0, 0};
+  expmap::Heat_query_options query;
+  query.near_source_blend = {0, 0};
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
-  const auto map = heat.compute_by_index(source, expmap::Patch::fraction(1.0));
+  const auto map = heat.compute_by_index(source, expmap::Patch::fraction(1.0), query);
 
   auto cgal_distance =
       mesh.add_property_map<Surface_mesh::Vertex_index, double>("v:cgal_distance", 0.0).first;

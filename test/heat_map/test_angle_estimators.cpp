@@ -78,14 +78,15 @@ struct Sphere_angle_errors {
 // Angle errors (up to a rotation) of heat maps of radius 0.5 on the unit
 // sphere against the analytic map, over a few sources.
 Sphere_angle_errors sphere_angle_errors(const expmap_analytic::Triangle_soup& soup,
-                                        const expmap::Heat_options& options) {
+                                        const expmap::Heat_options& options,
+                                        const expmap::Heat_query_options& query = {}) {
   Surface_mesh mesh;
   expmap_analytic::soup_to_mesh(soup, mesh);
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
   std::vector<double> errors;
   Sphere_angle_errors result;
   for (std::size_t s : {17u, 4000u, 9001u}) {
-    const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.5));
+    const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.5), query);
     std::vector<double> computed, exact;
     for (std::size_t i = 1; i < map.size(); ++i) {
       computed.push_back(map.angle[i]);
@@ -119,10 +120,10 @@ Sphere_angle_errors sphere_angle_errors(const expmap_analytic::Triangle_soup& so
 
 double sphere_angle_error(const expmap_analytic::Triangle_soup& soup,
                           expmap::Angle_estimator estimator) {
-  expmap::Heat_options options;
-  options.angle_estimator = estimator;
-  options.near_source_blend = {0, 0};  // the estimators alone
-  return sphere_angle_errors(soup, options).mean;
+  expmap::Heat_query_options query;
+  query.angle_estimator = estimator;
+  query.near_source_blend = {0, 0};  // the estimators alone
+  return sphere_angle_errors(soup, {}, query).mean;
 }
 
 // A hexagonal patch of the plane z = 0 (edge 0.1) with its vertices moved
@@ -317,14 +318,14 @@ BOOST_AUTO_TEST_CASE(two_column_estimators_equal_the_gradient_of_every_star_colu
 
   using E = expmap::Angle_estimator;
   for (E estimator : {E::heat_gradient, E::heat_quadratic_fit}) {
-    expmap::Heat_options options;
-    options.angle_estimator = estimator;
-    options.near_source_blend = {0, 0};
-    expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
+    expmap::Heat_query_options query;
+    query.angle_estimator = estimator;
+    query.near_source_blend = {0, 0};
+    expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
     for (int s : {5, 200, 611}) {
       BOOST_TEST_CONTEXT("estimator " << expmap::to_string(estimator) << ", source " << s) {
         const auto map = heat.compute_by_index(static_cast<std::size_t>(s),
-                                               expmap::Patch::geodesic_radius(0.6));
+                                               expmap::Patch::geodesic_radius(0.6), query);
         const auto frame = expmap::internal::tangent_frame(m, s, std::nullopt);
         // The quadratic fit is taken on the intrinsic Delaunay triangulation
         // the heat lives on.
@@ -449,10 +450,10 @@ BOOST_AUTO_TEST_CASE(cubic_leak_removal_in_a_batch_equals_one_call_per_vertex) {
 BOOST_AUTO_TEST_CASE(default_angles_are_accurate_on_an_irregular_sphere) {
   const expmap_analytic::Triangle_soup irregular = jittered_unit_sphere(5);
   const Sphere_angle_errors defaults = sphere_angle_errors(irregular, expmap::Heat_options{});
-  expmap::Heat_options previous;
+  expmap::Heat_query_options previous;
   previous.angle_estimator = expmap::Angle_estimator::log_heat_gradient;
   previous.near_source_blend = {0, 0};
-  const Sphere_angle_errors before = sphere_angle_errors(irregular, previous);
+  const Sphere_angle_errors before = sphere_angle_errors(irregular, {}, previous);
   BOOST_TEST_MESSAGE("jittered sphere, defaults: mean " << defaults.mean << ", largest within two rings "
                      << defaults.near_max << "; log-heat area-weighted without blend: mean "
                      << before.mean << ", largest within two rings " << before.near_max);
@@ -590,7 +591,7 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
   const Heat heat(mesh);
   const double h = heat.mean_edge_length();
   const auto map = heat.compute_by_index(0, expmap::Patch::geodesic_radius(14 * h));
-  const expmap::Heat_options defaults;
+  const expmap::Heat_query_options defaults;
   const double begin = defaults.near_source_blend.begin * h;
   std::size_t checked = 0, beyond = 0;
   double chord_error = 0, beyond_error = 0;
@@ -627,11 +628,10 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_narrows_where_the_surface_bends) {
   expmap_analytic::soup_to_mesh(soup, mesh);
   using Heat = expmap::Heat_exponential_map<Surface_mesh>;
   const Heat blended(mesh);
-  expmap::Heat_options pure_options;
-  pure_options.near_source_blend = {0, 0};
-  const Heat pure(mesh, pure_options);
+  expmap::Heat_query_options pure;
+  pure.near_source_blend = {0, 0};
   const double h = blended.mean_edge_length();
-  const expmap::Heat_options defaults;
+  const expmap::Heat_query_options defaults;
   const double nominal_end = defaults.near_source_blend.end * h;
   const expmap::internal::Mesh_arrays arrays = mesh_arrays_of(soup);
   const int s = 7;
@@ -645,7 +645,7 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_narrows_where_the_surface_bends) {
              boost::test_tools::tolerance(1e-12));
   const auto patch = expmap::Patch::geodesic_radius(nominal_end);
   const auto a = blended.compute_by_index(s, patch);
-  const auto b = pure.compute_by_index(s, patch);
+  const auto b = blended.compute_by_index(s, patch, pure);
   // The same vertices, perhaps in another order: the source's neighbours
   // report their edge lengths as distances within the blend.
   std::map<std::size_t, std::size_t> position_in_b;

@@ -161,11 +161,10 @@ BOOST_AUTO_TEST_CASE(armadillo_cutoff_error_after_a_margin_retry) {
   check_cutoff(heat, "armadillo", {11480}, {0.05});
   BOOST_TEST(
       heat.compute_by_index(11480, expmap::Patch::fraction(0.05)).statistics.region_retries == 1u);
-  expmap::Heat_options doubled;
+  expmap::Heat_query_options doubled;
   doubled.region_growth = 4;
-  const expmap::Heat_exponential_map<Surface_mesh> wide(mesh, doubled);
   const auto retried = heat.compute_by_index(2, expmap::Patch::fraction(0.01));
-  const auto direct = wide.compute_by_index(2, expmap::Patch::fraction(0.01));
+  const auto direct = heat.compute_by_index(2, expmap::Patch::fraction(0.01), doubled);
   BOOST_TEST(retried.statistics.region_retries == 1u);
   BOOST_TEST(direct.statistics.region_retries == 0u);
   BOOST_TEST_REQUIRE(retried.indices == direct.indices);
@@ -239,8 +238,8 @@ std::pair<double, double> largest_changes(const Map& a, const Map& b) {
 
 }  // namespace
 
-// Small count and radius patches of a large mesh prune their heat solves (Heat_options::
-// pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
+// Small count and radius patches of a large mesh prune their heat solves
+// (Heat_query_options::pruning_tolerance): the map must equal the unpruned one to 1e-10 of the
 // radius in distance and 1e-10 rad in angle, and the solves must read fewer
 // factor entries. A torus of 230k vertices, large enough that the query
 // prunes, closed (pruning needs nonnegative cotan weights, which boundary
@@ -251,19 +250,20 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
   Surface_mesh mesh;
   make_jittered_torus(mesh);
   const std::size_t vertex_count = num_vertices(mesh);
-  expmap::Heat_options unpruned_options;
-  unpruned_options.pruning_tolerance = 0;
-  const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
+  expmap::Heat_query_options unpruned;
+  unpruned.pruning_tolerance = 0;
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   for (const std::size_t source : {std::size_t{1000}, vertex_count / 2 + 77})
     for (const double fraction : {0.001, 0.004, 0.02}) {
       // A count patch, and a radius patch of its radius (its region found
       // down to a heat, which also sets its pruning threshold).
       const double patch_radius =
-          unpruned.compute_by_index(source, expmap::Patch::fraction(fraction)).distance.back();
+          heat.compute_by_index(source, expmap::Patch::fraction(fraction), unpruned)
+              .distance.back();
       for (const expmap::Patch& patch :
            {expmap::Patch::fraction(fraction), expmap::Patch::geodesic_radius(patch_radius)}) {
-        const auto a = pruned.compute_by_index(source, patch);
-        const auto b = unpruned.compute_by_index(source, patch);
+        const auto a = heat.compute_by_index(source, patch);
+        const auto b = heat.compute_by_index(source, patch, unpruned);
         BOOST_TEST_REQUIRE(a.indices == b.indices);
         const auto [distance_error, angle_error] = largest_changes(a, b);
         BOOST_TEST_MESSAGE("source " << source << ", " << fraction * 100 << "%, "
@@ -298,13 +298,13 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
     for (double& x : p) x += offset(rng);
   Surface_mesh mesh;
   expmap_analytic::soup_to_mesh(tube, mesh);
-  expmap::Heat_options unpruned_options;
-  unpruned_options.pruning_tolerance = 0;
-  const expmap::Heat_exponential_map<Surface_mesh> pruned(mesh), unpruned(mesh, unpruned_options);
+  expmap::Heat_query_options unpruned;
+  unpruned.pruning_tolerance = 0;
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   for (const std::size_t source :
        {std::size_t{around * 50 + 1}, static_cast<std::size_t>(num_vertices(mesh) / 2 + 3)}) {
-    const auto a = pruned.compute_by_index(source, expmap::Patch::fraction(0.004));
-    const auto b = unpruned.compute_by_index(source, expmap::Patch::fraction(0.004));
+    const auto a = heat.compute_by_index(source, expmap::Patch::fraction(0.004));
+    const auto b = heat.compute_by_index(source, expmap::Patch::fraction(0.004), unpruned);
     BOOST_TEST_REQUIRE(a.indices == b.indices);
     const auto [distance_error, angle_error] = largest_changes(a, b);
     BOOST_TEST_MESSAGE("tube, source " << source << ": " << a.statistics.factor_entries
@@ -359,12 +359,12 @@ BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
   Surface_mesh torus, sphere;
   make_jittered_torus(torus);
   expmap_analytic::soup_to_mesh(expmap_analytic::make_icosphere(5), sphere);
-  expmap::Heat_options two_threads;
-  two_threads.query_threads = 2;
-  auto compare = [](const auto& one, const auto& two, std::size_t source,
+  auto compare = [](const auto& heat, const expmap::Heat_query_options& one, std::size_t source,
                     const expmap::Patch& patch, const char* what) {
-    const auto a = one.compute_by_index(source, patch);
-    const auto b = two.compute_by_index(source, patch);
+    expmap::Heat_query_options two = one;
+    two.query_threads = 2;
+    const auto a = heat.compute_by_index(source, patch, one);
+    const auto b = heat.compute_by_index(source, patch, two);
     BOOST_TEST_REQUIRE(a.indices == b.indices);
     const auto [distance_change, angle_change] = largest_changes(b, a);
     BOOST_TEST_MESSAGE(what << ", source " << source << ", " << a.size() << " vertices: "
@@ -380,32 +380,30 @@ BOOST_AUTO_TEST_CASE(a_second_thread_changes_nothing_but_the_work) {
       BOOST_TEST(a.statistics.factor_entries < b.statistics.factor_entries);
   };
   {
-    const expmap::Heat_exponential_map<Surface_mesh> one(torus), two(torus, two_threads);
+    const expmap::Heat_exponential_map<Surface_mesh> heat(torus);
     for (const double fraction : {0.001, 0.004, 0.02, 0.1}) {
       const double radius =
-          one.compute_by_index(1000, expmap::Patch::fraction(fraction)).distance.back();
-      compare(one, two, 1000, expmap::Patch::fraction(fraction), "torus, count patch");
-      compare(one, two, 1000, expmap::Patch::geodesic_radius(radius), "torus, radius patch");
+          heat.compute_by_index(1000, expmap::Patch::fraction(fraction)).distance.back();
+      compare(heat, {}, 1000, expmap::Patch::fraction(fraction), "torus, count patch");
+      compare(heat, {}, 1000, expmap::Patch::geodesic_radius(radius), "torus, radius patch");
     }
   }
-  expmap::Heat_options logarithmic, gradient;
+  expmap::Heat_query_options logarithmic, gradient;
   logarithmic.angle_estimator = expmap::Angle_estimator::log_heat_quadratic_fit;
   gradient.angle_estimator = expmap::Angle_estimator::heat_gradient;
-  for (const expmap::Heat_options& options : {logarithmic, gradient}) {
-    expmap::Heat_options with_two = options;
-    with_two.query_threads = 2;
-    const expmap::Heat_exponential_map<Surface_mesh> one(sphere, options), two(sphere, with_two);
-    compare(one, two, 17, expmap::Patch::fraction(0.3), "icosphere");
-  }
+  const expmap::Heat_exponential_map<Surface_mesh> heat(sphere);
+  for (const expmap::Heat_query_options& options : {logarithmic, gradient})
+    compare(heat, options, 17, expmap::Patch::fraction(0.3), "icosphere");
 }
 
 BOOST_AUTO_TEST_CASE(query_threads_other_than_one_or_two_are_rejected) {
   Surface_mesh mesh;
   expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(4, 4, 1.0, 1.0), mesh);
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   for (const int threads : {0, 3, -1}) {
-    expmap::Heat_options options;
-    options.query_threads = threads;
-    BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
+    expmap::Heat_query_options query;
+    query.query_threads = threads;
+    BOOST_CHECK_THROW(heat.compute_by_index(0, expmap::Patch::fraction(0.5), query),
                       expmap::Invalid_input);
   }
 }
@@ -413,13 +411,16 @@ BOOST_AUTO_TEST_CASE(query_threads_other_than_one_or_two_are_rejected) {
 BOOST_AUTO_TEST_CASE(solve_tolerances_out_of_range_are_rejected) {
   Surface_mesh mesh;
   expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(4, 4, 1.0, 1.0), mesh);
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
   for (const double tolerance : {-1e-14, 1e-6, std::nan("")}) {
-    expmap::Heat_options pruning, compression;
+    expmap::Heat_query_options pruning;
     pruning.pruning_tolerance = tolerance;
+    BOOST_CHECK_THROW(heat.compute_by_index(0, expmap::Patch::fraction(0.5), pruning),
+                      expmap::Invalid_input);
+    expmap::Heat_options compression;
     compression.poisson_compression_tolerance = tolerance;
-    for (const auto& options : {pruning, compression})
-      BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, options)),
-                        expmap::Invalid_input);
+    BOOST_CHECK_THROW((expmap::Heat_exponential_map<Surface_mesh>(mesh, compression)),
+                      expmap::Invalid_input);
   }
 }
 

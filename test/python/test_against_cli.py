@@ -58,8 +58,9 @@ def test_exact_method_as_the_command_line_program(tmp_path, cactus):
 def test_heat_options_reach_the_library(tmp_path, elephant):
     path, V, F = elephant
     heat = expmap.HeatExponentialMap(V, F, time_factor=3.0, laplacian="direct",
-                                     vertex_area="barycentric", angle_estimator="heat_gradient", near_source_blend=(1.0, 3.0))
-    local = heat.compute(500, radius=0.05)
+                                     vertex_area="barycentric")
+    local = heat.compute(500, radius=0.05, angle_estimator="heat_gradient",
+                         near_source_blend=(1.0, 3.0))
     reference = cli_map(tmp_path, path, "heat", 500, "--radius", "0.05", "--time-factor", "3",
                         "--laplacian", "direct", "--vertex-area", "barycentric",
                         "--angles", "heat-gradient",

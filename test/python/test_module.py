@@ -114,8 +114,9 @@ def test_statistics_count_the_region_retries(elephant):
     # retry continues the first attempt, so its map is a first attempt on the
     # doubled region (region_growth 4).
     _, V, F = elephant
-    retried = expmap.HeatExponentialMap(V, F).compute(21, fraction=0.01)
-    direct = expmap.HeatExponentialMap(V, F, region_growth=4).compute(21, fraction=0.01)
+    heat = expmap.HeatExponentialMap(V, F)
+    retried = heat.compute(21, fraction=0.01)
+    direct = heat.compute(21, fraction=0.01, region_growth=4)
     assert retried.statistics["region_retries"] == 1
     assert direct.statistics["region_retries"] == 0
     assert retried.statistics["factor_entries"] > 0
@@ -135,8 +136,12 @@ def test_patch_kinds(heat):
 
 def test_every_enum_member_is_accepted_by_name_and_value(cactus):
     _, V, F = cactus
-    for enum, option in ((expmap.AngleEstimator, "angle_estimator"),
-                         (expmap.LaplacianMode, "laplacian"),
+    heat = expmap.HeatExponentialMap(V, F)
+    for name, value in expmap.AngleEstimator.__members__.items():
+        by_name = heat.compute(0, vertices=30, angle_estimator=name)
+        by_value = heat.compute(0, vertices=30, angle_estimator=value)
+        np.testing.assert_array_equal(by_name.uv, by_value.uv)
+    for enum, option in ((expmap.LaplacianMode, "laplacian"),
                          (expmap.VertexArea, "vertex_area"),
                          (expmap.FactorPrecision, "factor_precision"),
                          (expmap.PoissonRegularization, "regularization")):
@@ -162,8 +167,9 @@ def test_a_second_query_thread_gives_the_same_map(elephant):
     # A 50% patch: a region of every vertex, solved for the star beside the
     # distance.
     _, V, F = elephant
-    one = expmap.HeatExponentialMap(V, F).compute(0, fraction=0.5)
-    two = expmap.HeatExponentialMap(V, F, query_threads=2).compute(0, fraction=0.5)
+    heat = expmap.HeatExponentialMap(V, F)
+    one = heat.compute(0, fraction=0.5)
+    two = heat.compute(0, fraction=0.5, query_threads=2)
     np.testing.assert_array_equal(two.vertices, one.vertices)
     radius = one.r.max()
     assert np.max(np.abs(two.r - one.r)) <= 1e-12 * radius
@@ -235,12 +241,25 @@ def test_bad_meshes_raise_value_error(cactus, method):
 def test_bad_options_raise_value_error(cactus):
     _, V, F = cactus
     for options in ({"time_factor": 0.0}, {"time_factor": float("nan")}, {"time_factor": -1.0},
-                    {"time_factor": float("inf")}, {"region_growth": 0.5},
-                    {"pruning_tolerance": -1.0}, {"poisson_compression_tolerance": 1e-6},
-                    {"laplacian": "delaunay"}, {"angle_estimator": 3}, {"regularization": None},
-                    {"query_threads": 0}, {"query_threads": 3}):
+                    {"time_factor": float("inf")}, {"poisson_compression_tolerance": 1e-6},
+                    {"laplacian": "delaunay"}, {"regularization": None}):
         with pytest.raises(ValueError):
             expmap.HeatExponentialMap(V, F, **options)
+    heat = expmap.HeatExponentialMap(V, F)
+    for settings in ({"region_growth": 0.5}, {"region_growth": "2"}, {"pruning_tolerance": -1.0},
+                     {"angle_estimator": 3}, {"near_source_blend": (3, 1)},
+                     {"near_source_blend": 2.0}, {"query_threads": 0}, {"query_threads": 3}):
+        with pytest.raises(ValueError):
+            heat.compute(0, vertices=30, **settings)
+        with pytest.raises(ValueError):
+            heat.compute_many([0, 1], vertices=30, **settings)
+    # Query settings belong to the query; the other methods have none.
+    with pytest.raises(TypeError, match="'region_growth': it is a query setting"):
+        expmap.HeatExponentialMap(V, F, region_growth=2.0)
+    with pytest.raises(TypeError, match="unexpected keyword argument 'angle_estimator'"):
+        expmap.DiscreteExponentialMap(V, F).compute(0, vertices=30, angle_estimator="heat_gradient")
+    with pytest.raises(TypeError, match="unexpected keyword argument 'region_grwoth'"):
+        heat.compute(0, vertices=30, region_grwoth=2.0)
 
 
 def test_near_source_blend_is_scaled_per_source(cactus):
@@ -253,7 +272,7 @@ def test_near_source_blend_is_scaled_per_source(cactus):
         assert begin == pytest.approx(end / 3, rel=1e-12)
         scales.add(round(end, 9))
     assert len(scales) > 1  # the cactus bends more at some sources than at others
-    assert expmap.HeatExponentialMap(V, F, near_source_blend=(0, 0)).near_source_blend_at(0) == (0, 0)
+    assert mapper.near_source_blend_at(0, near_source_blend=(0, 0)) == (0, 0)
     for bad in (len(V), -1, 1.5):
         with pytest.raises(ValueError):
             mapper.near_source_blend_at(bad)

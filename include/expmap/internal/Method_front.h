@@ -24,15 +24,20 @@ namespace internal {
 /// queries by vertex descriptor, and batches. `Derived` (the method class, which derives from
 /// this one) provides
 ///
-///     Result compute_by_index(std::size_t source, const Patch&, const Query_options&) const;
+///     Result compute_by_index(std::size_t source, const Patch&, const QueryOptions&) const;
 ///
 /// which must be thread safe; everything here is written in terms of it.
-template <class Derived, class TriangleMesh, class VertexPointMap>
+/// `QueryOptions` is the method's per-query settings: `Query_options`, or a
+/// type that extends it and converts from it.
+template <class Derived, class TriangleMesh, class VertexPointMap,
+          class QueryOptions = Query_options>
 class Method_front {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Vertex_point_map = typename Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
   using Result = Local_map<vertex_descriptor>;
+  /// The settings of one query.
+  using Query = QueryOptions;
 
   /// Copies the mesh, with its `vertex_point` map.
   /// \throws Invalid_input for meshes that cannot be used (empty, not
@@ -48,7 +53,7 @@ class Method_front {
   /// \pre `source` is a vertex of the mesh given to the constructor.
   /// \throws Invalid_input, Computation_error as `compute_by_index()`.
   Result compute(vertex_descriptor source, const Patch& patch,
-                 const Query_options& query = {}) const {
+                 const Query& query = {}) const {
     return derived().compute_by_index(m_indexed.index_of(source), patch, query);
   }
 
@@ -63,7 +68,7 @@ class Method_front {
   /// \endcode
   Batch_result<vertex_descriptor> compute_many(const std::vector<vertex_descriptor>& sources,
                                                const Patch& patch, const Batch_options& batch = {},
-                                               const Query_options& query = {}) const {
+                                               const Query& query = {}) const {
     std::vector<std::size_t> indices;
     indices.reserve(sources.size());
     for (vertex_descriptor v : sources) indices.push_back(m_indexed.index_of(v));
@@ -75,7 +80,7 @@ class Method_front {
   Batch_result<vertex_descriptor> compute_many_by_index(const std::vector<std::size_t>& sources,
                                                         const Patch& patch,
                                                         const Batch_options& batch = {},
-                                                        const Query_options& query = {}) const {
+                                                        const Query& query = {}) const {
     return run_batch<vertex_descriptor>(sources, batch, [&](std::size_t source) {
       return derived().compute_by_index(source, patch, query);
     });

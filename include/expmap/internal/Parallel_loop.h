@@ -24,7 +24,7 @@ inline unsigned batch_thread_count(unsigned requested, std::size_t work) {
 
 /// Whether the calling thread runs a parallel loop's body beside other
 /// threads. Work that could start a thread of its own (a heat query's
-/// second thread, `Heat_options::query_threads`) does not there: the loop
+/// second thread, `Heat_query_options::query_threads`) does not there: the loop
 /// already keeps a thread per core busy.
 inline bool& in_parallel_loop() {
   thread_local bool inside = false;

@@ -34,6 +34,16 @@ namespace heat {
 /// 2h), beyond what `heat_quadratic_fit`'s cubic correction models.
 constexpr double min_time_factor_of_two_ring_fit = 4.0;
 
+/// The estimator a query asking for `requested` uses at `time_factor`:
+/// `heat_quadratic_fit` below `min_time_factor_of_two_ring_fit` becomes
+/// `log_heat_quadratic_fit`.
+inline Angle_estimator angle_estimator_at(Angle_estimator requested, double time_factor) {
+  if (requested == Angle_estimator::heat_quadratic_fit &&
+      time_factor < min_time_factor_of_two_ring_fit)
+    return Angle_estimator::log_heat_quadratic_fit;
+  return requested;
+}
+
 /// Everything a query reads besides the mesh: operators and factors of the
 /// triangulation the Laplacian is built on. Immutable once built.
 struct Heat_factors {
@@ -41,14 +51,14 @@ struct Heat_factors {
   Vertex_adjacency neighbors;      // the stars the angles are fitted on
   std::vector<char> is_pinned;     // one vertex per component in the Poisson system
   double time_step = 0;            // t = time_factor h^2
+  double time_factor = 0;          // of the options
   double mean_vertex_area = 0;     // the mass matrix's mean: the area per vertex
-  Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   // The heat matrix A = M + tL is an M-matrix (no positive off-diagonal
   // entry): its inverse factor is then nonnegative, so the source heat can
   // be solved largest first and pruning only lowers values.
   bool heat_is_m_matrix = false;
-  double pruning_tolerance = 0;               // the option's, 0 where A forbids it
   std::vector<double> inverse_heat_diagonal;  // 1 / A_vv, a lower bound of the heat at v
+                                              // (only for an M-matrix)
   Localized_cholesky_solver heat, poisson;
   // The heat with a zero (Dirichlet) condition on the mesh's boundary loops
   // at least sqrt(t) long (see Star_solve.h), and those loops' vertices;
@@ -154,11 +164,8 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
                                    : lumped_mass(tri, shapes);
   f.mean_vertex_area = mass.sum() / static_cast<double>(std::max<Eigen::Index>(1, mass.size()));
   const double h2 = mesh.mean_edge_length * mesh.mean_edge_length;
+  f.time_factor = options.time_factor;
   f.time_step = options.time_factor * h2;
-  f.angle_estimator = options.angle_estimator;
-  if (f.angle_estimator == Angle_estimator::heat_quadratic_fit &&
-      options.time_factor < min_time_factor_of_two_ring_fit)
-    f.angle_estimator = Angle_estimator::log_heat_quadratic_fit;
 
   // Identity rows need a zero right-hand side: isolated vertices get none,
   // and a pinned vertex's potential must stay 0.
@@ -174,11 +181,10 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
     make_identity_row(A, identity_rows);
     f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
     f.heat_is_m_matrix = is_m_matrix(A);
-    if (f.heat_is_m_matrix && options.pruning_tolerance > 0) {
+    if (f.heat_is_m_matrix) {
       const Eigen::VectorXd diagonal = A.diagonal();
       f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
       for (int v = 0; v < A.rows(); ++v) f.inverse_heat_diagonal[v] = 1.0 / diagonal[v];
-      f.pruning_tolerance = options.pruning_tolerance;
     }
 
     // Loops shorter than the heat's length scale sqrt(t) are left out: such

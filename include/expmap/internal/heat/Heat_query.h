@@ -88,8 +88,8 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
   // tangent frame.
   const Star_gradient star = source_star_gradient(c, s, frame);
   const auto component = static_cast<std::size_t>(c.mesh.component_size[c.mesh.component[s]]);
-  for (double growth = c.options.region_growth;; growth *= 2) {
-    const bool retry = growth > c.options.region_growth;
+  for (double growth = c.query.region_growth;; growth *= 2) {
+    const bool retry = growth > c.query.region_growth;
     if (retry) ++stats.region_retries;
     // Steps 1 and 2.
     bool whole_component = false;
@@ -98,7 +98,7 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
 
     // Steps 3 and 4; with a second thread, step 6 beside them, on the whole region
     // (the patch is not known before the distance).
-    bool star_beside = c.options.query_threads > 1 && !in_parallel_loop() &&
+    bool star_beside = c.query.query_threads > 1 && !in_parallel_loop() &&
                        ws.region.size() >= min_region_beside_distance;
     {
       std::future<Solve_statistics> region_star;

@@ -97,7 +97,7 @@ inline Region_end region_end(const Context& c, double horizon, const Workspace& 
 // region's edge: a geodesic disk with `region_growth` times the patch's
 // vertices has sqrt(region_growth) times its radius.
 inline double patch_margin(const Context& c) {
-  return std::max(1.0, 0.85 * std::sqrt(c.options.region_growth));
+  return std::max(1.0, 0.85 * std::sqrt(c.query.region_growth));
 }
 
 // Whether the patch at region positions `order` is the one asked for: all

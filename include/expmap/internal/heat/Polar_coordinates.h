@@ -41,13 +41,14 @@ constexpr double max_near_source_widening = 1.5;
 /// triangles in between over (doc/folds.md).
 constexpr double blend_normal_turn = 1.0;
 
-// The query's blend from geometric into heat coordinates: the options'
+// The query's blend from geometric into heat coordinates: the query's
 // Near_source_blend in mean edge lengths, scaled by blend_normal_turn over
 // the normal's turn across the blend's end (at most
 // max_near_source_widening). `normal`: the vertex normal of s.
 inline Near_source_zone near_source_zone(const Context& c, int s, const Vector3& normal) {
   const double h = c.mesh.mean_edge_length;
-  Near_source_zone zone{c.options.near_source_blend.begin * h, c.options.near_source_blend.end * h};
+  Near_source_zone zone{c.query.near_source_blend.begin * h,
+                        c.query.near_source_blend.end * h};
   if (zone.end > 0) {
     const double turn = normal_turn_rate(c.mesh, s, normal) * zone.end;
     const double scale = turn > 0 ? std::min(blend_normal_turn / turn, max_near_source_widening)
@@ -107,7 +108,7 @@ inline double polar_angle(const Context& c, int s, int v, double r,
 inline std::array<double, 2> heat_direction(const Context& c, double at_source,
                                             const Star_gradient& star, const double* h,
                                             std::vector<double>& values) {
-  const Angle_estimator estimator = c.factors.angle_estimator;
+  const Angle_estimator estimator = c.estimator;
   if (is_linear_in_heat(estimator)) {
     // The solve applied the gradient weights already.
     if (estimator == Angle_estimator::heat_quadratic_fit && at_source > 0)
@@ -127,7 +128,7 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, int s,
                                                   const Star_gradient& star,
                                                   const std::vector<std::size_t>& order,
                                                   const Workspace& ws) {
-  const Angle_estimator estimator = c.factors.angle_estimator;
+  const Angle_estimator estimator = c.estimator;
   const bool linear = is_linear_in_heat(estimator);
   const std::size_t width = star_columns(c, star);
   const std::size_t boundary_width = boundary_star_columns(c, star);

@@ -22,9 +22,21 @@ namespace heat {
 
 /// The read-only inputs of every phase.
 struct Context {
+  Context(const Mesh_arrays& mesh, const Heat_factors& factors, const Heat_options& options,
+          const Heat_query_options& query)
+      : mesh(mesh),
+        factors(factors),
+        options(options),
+        query(query),
+        estimator(angle_estimator_at(query.angle_estimator, factors.time_factor)),
+        pruning_tolerance(factors.heat_is_m_matrix ? query.pruning_tolerance : 0.0) {}
+
   const Mesh_arrays& mesh;  // renumbered along locality_order
   const Heat_factors& factors;
-  const Heat_options& options;
+  const Heat_options& options;     // the precomputation's
+  const Heat_query_options& query;  // this query's
+  Angle_estimator estimator;       // the query's, as the time factor allows
+  double pruning_tolerance;        // the query's, 0 where the heat matrix forbids pruning
 };
 
 /// A star solve's right-hand side and the heat from the star on the rows
@@ -38,27 +50,40 @@ struct Star_solve {
 /// estimators linear in the heat (three with the boundary's Dirichlet
 /// column), else one per star vertex, which the solver splits into blocks
 /// of its widest kernel. The solver workspace's block is sized by it.
-inline int star_solve_width(const Heat_factors& factors, bool boundary) {
-  return is_linear_in_heat(factors.angle_estimator) ? (boundary ? 3 : 2)
-                                                     : Localized_cholesky_solver::max_block_width;
+inline int star_solve_width(Angle_estimator estimator, bool boundary) {
+  return is_linear_in_heat(estimator) ? (boundary ? 3 : 2)
+                                      : Localized_cholesky_solver::max_block_width;
 }
 
 /// The state of one query, phase by phase.
 struct Workspace {
+  /// A workspace for the default estimator's star solves.
   Workspace(const Heat_factors& factors, std::size_t n)
-      : heat_solve(factors.heat.size(), factors.heat.number_of_supernodes(),
-                   star_solve_width(factors, false)),
-        poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1),
-        region_star_solve(0, 0, star_solve_width(factors, false)),
+      : poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1),
         tentative(n) {
-    if (factors.has_boundary())
-      boundary_heat_solve = Localized_cholesky_solver::Workspace(
-          factors.boundary_heat.size(), factors.boundary_heat.number_of_supernodes(),
-          star_solve_width(factors, true));
+    fit_star_solves(factors, Heat_query_options().angle_estimator);
     in_region.resize(n);
     seen.resize(n);
     wanted.resize(n);
   }
+
+  /// Widens the star solves' workspaces for `estimator` if they are
+  /// narrower: a workspace keeps the widest block any of its queries asked
+  /// for.
+  void fit_star_solves(const Heat_factors& factors, Angle_estimator estimator) {
+    const int width = star_solve_width(estimator, false);
+    if (width <= star_width) return;
+    star_width = width;
+    heat_solve = Localized_cholesky_solver::Workspace(
+        factors.heat.size(), factors.heat.number_of_supernodes(), width);
+    if (factors.has_boundary())
+      boundary_heat_solve = Localized_cholesky_solver::Workspace(
+          factors.boundary_heat.size(), factors.boundary_heat.number_of_supernodes(),
+          star_solve_width(estimator, true));
+    region_star_solve = Localized_cholesky_solver::Workspace(0, 0, width);
+  }
+
+  int star_width = 0;  // the widest star solve the workspaces below serve
   Localized_cholesky_solver::Workspace heat_solve, poisson_solve, boundary_heat_solve;
   // The second thread's (query_threads 2): sized by the first solve that
   // uses it, so a workspace of a parallel batch, whose queries run on one

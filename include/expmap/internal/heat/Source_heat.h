@@ -34,7 +34,7 @@ constexpr std::size_t min_component_per_pruned_candidate = 10;
 inline bool prunes(const Context& c, int s, std::size_t count) {
   const auto component =
       static_cast<std::size_t>(c.mesh.component_size[c.mesh.component[s]]);
-  return c.factors.pruning_tolerance > 0 && component >= min_pruned_component &&
+  return c.pruning_tolerance > 0 && component >= min_pruned_component &&
          count * min_component_per_pruned_candidate <= component;
 }
 
@@ -59,7 +59,7 @@ inline void choose_source_heat_pruning(const Context& c, int s, std::size_t coun
   ws.prune = prunes(c, s, count);
   ws.heat_drop_below = 0;
   if (ws.prune)
-    ws.heat_drop_below = c.factors.pruning_tolerance *
+    ws.heat_drop_below = c.pruning_tolerance *
                          (smallest_heat > 0 ? smallest_heat : smallest_heat_guess(c, s, count));
 }
 
@@ -201,7 +201,7 @@ inline Solve_statistics solve_region_largest_first(const Context& c, int s, cons
 inline Solve_statistics confirm_pruned_source_heat(const Context& c, int s, bool largest_first,
                                                    Workspace& ws) {
   Solve_statistics stats;
-  const double tolerance = c.factors.pruning_tolerance;
+  const double tolerance = c.pruning_tolerance;
   for (int attempt = 0; ws.heat_drop_below > 0; ++attempt) {
     double smallest = std::numeric_limits<double>::infinity();
     for (const std::size_t row : ws.heat_row) smallest = std::min(smallest, ws.heat[row]);

@@ -28,7 +28,7 @@ namespace heat {
 // The linear map from heat values on the star of s to their gradient at s,
 // for the query's angle estimator.
 inline Star_gradient source_star_gradient(const Context& c, int s, const Tangent_frame& frame) {
-  const Angle_estimator estimator = c.factors.angle_estimator;
+  const Angle_estimator estimator = c.estimator;
   if (estimator == Angle_estimator::log_heat_quadratic_fit ||
       estimator == Angle_estimator::heat_quadratic_fit) {
     // Fitted on the triangulation the heat lives on: after intrinsic
@@ -53,20 +53,20 @@ inline Star_gradient source_star_gradient(const Context& c, int s, const Tangent
 // Columns of the star solve: the two rows of the gradient weights for an
 // estimator linear in the heat, else one per star vertex.
 inline std::size_t star_columns(const Context& c, const Star_gradient& star) {
-  return is_linear_in_heat(c.factors.angle_estimator) ? 2 : star.vertices.size();
+  return is_linear_in_heat(c.estimator) ? 2 : star.vertices.size();
 }
 
 // Columns of the Dirichlet star solve: a linear estimator also needs the
 // Dirichlet heat from s, which the Neumann solve reads from the source heat.
 inline std::size_t boundary_star_columns(const Context& c, const Star_gradient& star) {
-  return is_linear_in_heat(c.factors.angle_estimator) ? 3 : star.vertices.size();
+  return is_linear_in_heat(c.estimator) ? 3 : star.vertices.size();
 }
 
 // The right-hand side of a star solve of `width` columns.
 inline void star_right_hand_side(const Context& c, const Star_gradient& star, std::size_t width,
                                  std::vector<Rhs_entry>& rhs) {
   rhs.clear();
-  if (is_linear_in_heat(c.factors.angle_estimator)) {
+  if (is_linear_in_heat(c.estimator)) {
     for (std::size_t k = 0; k < star.vertices.size(); ++k) {
       rhs.push_back({star.vertices[k], 0, star.along_e1[k]});
       rhs.push_back({star.vertices[k], 1, star.along_e2[k]});
@@ -88,8 +88,8 @@ inline double star_heat_drop_below(const Context& c, const std::vector<int>& row
   for (const int v : rows)
     smallest = std::min(smallest, ws.region_heat[static_cast<std::size_t>(ws.in_region.value(v))]);
   const double scale =
-      is_linear_in_heat(c.factors.angle_estimator) ? 1 / std::sqrt(c.factors.time_step) : 1.0;
-  return c.factors.pruning_tolerance * 1e-3 * smallest * scale;
+      is_linear_in_heat(c.estimator) ? 1 / std::sqrt(c.factors.time_step) : 1.0;
+  return c.pruning_tolerance * 1e-3 * smallest * scale;
 }
 
 // The smallest magnitude a star solve read: of the gradient (a vector) or
@@ -97,7 +97,7 @@ inline double star_heat_drop_below(const Context& c, const std::vector<int>& row
 inline double smallest_star_value(const Context& c, std::size_t width,
                                   const std::vector<double>& heat) {
   double smallest = std::numeric_limits<double>::infinity();
-  if (is_linear_in_heat(c.factors.angle_estimator)) {
+  if (is_linear_in_heat(c.estimator)) {
     for (std::size_t i = 0; i + width <= heat.size(); i += width)
       smallest = std::min(smallest, heat[i] * heat[i] + heat[i + 1] * heat[i + 1]);
     return std::sqrt(smallest);
@@ -123,7 +123,7 @@ inline Solve_statistics solve_star_heat(const Context& c, const Star_gradient& s
   if (drop_below == 0) return stats;
   // The gradient columns change sign, so pruning need not lower them: the
   // check is that every value read stays far above the threshold.
-  if (drop_below > c.factors.pruning_tolerance * smallest_star_value(c, width, out.heat))
+  if (drop_below > c.pruning_tolerance * smallest_star_value(c, width, out.heat))
     stats += heat.solve(out.rhs, static_cast<int>(width), rows.data(), rows.size(),
                         out.heat.data(), solver);
   return stats;
