@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The boundary study: the four methods at sources on and near the boundary
-# of every libcgal-demo mesh that has one, against the exact map, with the
-# heat method's targets relative to DGPC (benchmark/evaluation/
-# boundary_study.cpp documents the measures and options).
+# of every libcgal-demo mesh that has one, and at interior sources whose
+# patches stay clear of it, against the exact map, with the heat method's
+# targets relative to DGPC (benchmark/evaluation/boundary_study.cpp
+# documents the measures and options).
 #
 #   scripts/boundary-study.sh [OUT_PREFIX] [expmap-boundary-study options]
 #
