@@ -217,7 +217,7 @@ class Batch_output {
       if (output.format != expmap_cli::Output_format::csv) continue;
       m_csv.emplace_back(output.path);
       if (!m_csv.back()) throw Runtime_error("cannot create output file '" + output.path + "'");
-      m_csv.back() << "source,vertex,r,theta,u,v\n";
+      m_csv.back() << "source,vertex,r,theta,u,v,fold_free_radius\n";
     }
     m_opened = true;
   }
@@ -351,6 +351,9 @@ std::string map_options_help() {
        "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
        "                       1 maps the source's whole connected component\n"
        "  --vertices K         the K >= 1 vertices nearest to the source\n"
+       "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
+       "                       the vertices nearer than the nearest flipped\n"
+       "                       triangle's farthest corner, so none is flipped\n"
        "method:\n"
        "  --method M           default: heat; one of\n";
   for (const Method& m : methods) {
@@ -412,7 +415,8 @@ std::string compute_help() {
          "                      [--laplacian L] [--vertex-area A]\n"
          "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
-         "                      [--no-triangulate] [--repair] -o OUT [-o OUT ...]\n"
+         "                      [--no-triangulate] [--repair] [--trim-folds]\n"
+         "                      -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
          "  --source V           source vertex, 0-based index in file order (required;\n"
@@ -428,7 +432,7 @@ std::string compute_help() {
          "  -h, --help           this help\n"
          "\n"
          "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
-         "max r, flipped triangles) goes to stdout; errors go to stderr as\n"
+         "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
          "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
 }
 
@@ -439,6 +443,7 @@ std::string batch_help() {
          "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                    [--near-source-blend B,E]\n"
          "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+         "                    [--trim-folds]\n"
          "                    -o OUT [-o OUT ...]\n"
          "\n"
          "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
@@ -450,11 +455,14 @@ std::string batch_help() {
          "  --threads N          queries run on N threads (default: 0, all cores)\n" +
          map_options_help() +
          "output (at least one, format by extension; may repeat):\n"
-         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v; per source its\n"
-         "                             patch vertices, nearest first\n"
+         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v,fold_free_radius;\n"
+         "                             per source its patch vertices, nearest first,\n"
+         "                             each row with its source's fold-free radius\n"
          "                       .npz  NumPy arrays (numpy.load): sources (k),\n"
-         "                             offsets (k+1), vertex, r, theta, u, v; rows\n"
-         "                             offsets[i] to offsets[i+1] belong to sources[i]\n"
+         "                             offsets (k+1), vertex, r, theta, u, v,\n"
+         "                             fold_free_radius (k, NaN where a query failed);\n"
+         "                             rows offsets[i] to offsets[i+1] belong to\n"
+         "                             sources[i]\n"
          "  -h, --help           this help\n"
          "\n"
          "A progress bar (maps done, maps per second, time left) goes to stderr when it\n"
@@ -617,6 +625,8 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
       find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a);
   expmap::Query_options query;
   query.reference_direction = a.reference;
+  query.trim_folds = a.trim_folds;
+  query.find_fold_free_radius = true;  // the summary prints it
 
   Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
@@ -632,6 +642,11 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
               a.source);
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
+  // Where the map is one-to-one, against the patch's own radius.
+  const double fold_free = run.map.fold_free_radius.value_or(0.0);
+  std::printf("fold-free:   %.6g", fold_free);
+  if (max_r > 0) std::printf(" (%.3f of max r)", fold_free / max_r);
+  std::printf("%s\n", a.trim_folds ? ", trimmed by --trim-folds" : "");
   for (const auto& output : a.outputs) {
     write_output(output, input, run);
     std::printf("wrote:       %s\n", output.path.c_str());
@@ -687,6 +702,8 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   const std::vector<std::size_t> sources = batch_sources(a, input);
   expmap::Query_options query;
   query.reference_direction = a.reference;
+  query.trim_folds = a.trim_folds;
+  query.find_fold_free_radius = true;  // a column of every output
 
   Batch_output output(a.outputs, input.report.file_index);
   Batch_run run = with_repair_hint(

@@ -112,11 +112,15 @@ class Discrete_exponential_map
 
  private:
   struct Workspace {
-    explicit Workspace(std::size_t n) : dijkstra(n), u(n), turn(n) { wanted.resize(n); }
+    explicit Workspace(std::size_t n) : dijkstra(n), u(n), turn(n) {
+      wanted.resize(n);
+      map_position.resize(n);
+    }
     internal::Dijkstra_workspace dijkstra;
     std::vector<std::array<double, 2>> u;     // coordinates of frozen vertices
     std::vector<std::array<double, 2>> turn;  // their frame turn (cos, sin)
     internal::Vertex_marks wanted;
+    internal::Vertex_marks map_position;  // assemble_local_map's scratch
     std::vector<internal::Polar_entry> entries;
   };
 
@@ -219,7 +223,8 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
     if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query, ws->map_position);
 }
 
 }  // namespace expmap

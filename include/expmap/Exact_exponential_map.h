@@ -110,8 +110,10 @@ class Exact_exponential_map
       in_region.resize(vertices);
       seen.resize(vertices);
       wanted.resize(vertices);
+      map_position.resize(vertices);
     }
     internal::Vertex_marks face_marks, vertex_marks, in_region, seen, wanted;
+    internal::Vertex_marks map_position;  // assemble_local_map's scratch
     std::vector<double> tentative;
     std::vector<int> region, face_queue;
     internal::Ball_submesh ball;
@@ -206,7 +208,8 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
   ws->wanted.next_query();
   for (int v : q.wanted) ws->wanted.mark(v, 0);
   if ((q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
-    return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+    return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                        q.frame, query, ws->map_position);
 
   // A hair more than the radius, so that rounding cannot drop a face that
   // a geodesic of length exactly R touches.
@@ -261,7 +264,8 @@ Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const
     e.angle = q.frame.angle_of(first_direction(ws->path, ps, e.distance));
     e.vertex = ball.mesh_vertex[e.vertex];
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query, ws->map_position);
 }
 
 }  // namespace expmap

@@ -85,6 +85,23 @@ patch_triangles(const TriangleMesh& tm, const Local_map<VertexDescriptor>& map) 
   return triangles;
 }
 
+namespace internal {
+
+/// Twice the signed (u, v) area of the triangle whose corners are at these
+/// positions of a map (in the face's order), `uv(i)` giving the coordinates
+/// of position i, evaluated from the corner nearest the source: rounding
+/// then does not depend on which corner a mesh lists first, so the methods
+/// (on their copy of the mesh) and `patch_triangles()` (on the user's) agree
+/// on every sign.
+template <class Uv>
+double signed_uv_area2(const Uv& uv, std::array<std::size_t, 3> corner) {
+  std::rotate(corner.begin(), std::min_element(corner.begin(), corner.end()), corner.end());
+  const std::array<double, 2> a = uv(corner[0]), b = uv(corner[1]), c = uv(corner[2]);
+  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+}  // namespace internal
+
 /// \ingroup PkgExpmapRef
 /// Twice the signed area of a patch triangle in the (u, v) plane: positive
 /// when the map keeps the face's orientation (counter-clockwise about the
@@ -92,10 +109,7 @@ patch_triangles(const TriangleMesh& tm, const Local_map<VertexDescriptor>& map) 
 template <class VertexDescriptor, class FaceDescriptor>
 double signed_uv_area2(const Local_map<VertexDescriptor>& map,
                        const Patch_triangle<FaceDescriptor>& triangle) {
-  const auto a = map.uv(triangle.corner[0]);
-  const auto b = map.uv(triangle.corner[1]);
-  const auto c = map.uv(triangle.corner[2]);
-  return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+  return internal::signed_uv_area2([&](std::size_t i) { return map.uv(i); }, triangle.corner);
 }
 
 /// \ingroup PkgExpmapRef

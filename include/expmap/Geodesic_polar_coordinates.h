@@ -110,11 +110,13 @@ class Geodesic_polar_coordinates
       known.resize(n);
       popped.resize(n);
       wanted.resize(n);
+      map_position.resize(n);
     }
     internal::Fibonacci_vertex_queue queue;
     internal::Vertex_marks known;   // distance and angle are current
     internal::Vertex_marks popped;  // popped at least once
     internal::Vertex_marks wanted;
+    internal::Vertex_marks map_position;  // assemble_local_map's scratch
     std::vector<double> distance, angle;  // native angles
     std::vector<int> popped_order;
     std::vector<internal::Polar_entry> entries;
@@ -240,7 +242,8 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
                      });
     ws->entries.resize(keep);
   }
-  return internal::assemble_local_map(s, ws->entries, m_indexed.descriptors, q.frame);
+  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
+                                      q.frame, query, ws->map_position);
 }
 
 }  // namespace expmap

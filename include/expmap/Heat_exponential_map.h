@@ -124,8 +124,10 @@ class Heat_exponential_map
     Solve_statistics statistics;
     std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
         c, s, frame, patch, target, wanted, *ws, statistics);
-    Result result = internal::assemble_local_map(static_cast<int>(mesh.to_original(s)), entries,
-                                                 m_indexed.descriptors, frame);
+    Result result =
+        internal::assemble_local_map(mesh, static_cast<int>(mesh.to_original(s)), entries,
+                                     m_indexed.descriptors, frame, query,
+                                     ws->map_position);
     result.statistics = statistics;
     return result;
   }

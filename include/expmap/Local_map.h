@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace expmap {
@@ -35,6 +36,15 @@ struct Local_map {
   std::array<double, 3> axis_u{};          ///< unit tangent axis of angle 0
   std::array<double, 3> axis_v{};          ///< unit tangent axis of angle pi/2
   Solve_statistics statistics;             ///< work of the localized solves (heat method)
+  /// Where the map is one-to-one: the largest r such that no patch triangle
+  /// with every corner nearer than r to the source is flipped or collapsed
+  /// in (u, v) (`is_flipped()`). That is the smallest, over the flipped
+  /// triangles, of their farthest corner's distance, or the largest distance
+  /// in the map if none is flipped. Set when the query asked for it
+  /// (`Query_options::find_fold_free_radius` or `trim_folds`, which cuts
+  /// the map to that disk; the pass costs about a tenth of a query), else
+  /// empty: `expmap::fold_free_radius(tm, map)` finds it afterwards.
+  std::optional<double> fold_free_radius;
 
   /// Number of patch vertices (the source included).
   std::size_t size() const { return vertices.size(); }

@@ -111,6 +111,14 @@ struct Query_options {
   /// plane. Default: the world x axis (the y axis where the source normal is
   /// within 30 degrees of x).
   std::optional<std::array<double, 3>> reference_direction;
+  /// Cut the map to its fold-free disk: keep only the vertices nearer than
+  /// `Local_map::fold_free_radius` (the source always), so that no triangle
+  /// of the result is flipped; a map without a fold stays whole. See
+  /// `trim_to_fold_free_disk()`.
+  bool trim_folds = false;
+  /// Fill `Local_map::fold_free_radius` (one more pass over the patch's
+  /// triangles; `trim_folds` fills it too).
+  bool find_fold_free_radius = false;
 };
 
 }  // namespace expmap

@@ -34,7 +34,7 @@ import numpy as np
 from . import METHODS, read_mesh
 
 #: The arrays of one mesh's maps, as in ``expmap batch -o OUT.npz``.
-ARRAY_NAMES = ("sources", "offsets", "vertex", "r", "theta", "u", "v")
+ARRAY_NAMES = ("sources", "offsets", "vertex", "r", "theta", "u", "v", "fold_free_radius")
 
 # Per worker process: (path, method, options) -> method object, the least
 # recently used dropped beyond _CACHE_SIZE (precomputations are large).
@@ -113,7 +113,7 @@ def _empty_chunk():
 
 def _concatenate(chunks):
     """One mesh's arrays from its chunks' arrays, in chunk order."""
-    out = {name: np.concatenate([c[name] for c in chunks]) for name in ("sources", "vertex", "r", "theta", "u", "v")}
+    out = {name: np.concatenate([c[name] for c in chunks]) for name in ARRAY_NAMES if name != "offsets"}
     out["errors"] = np.concatenate([c["errors"] for c in chunks]).astype(str)
     offsets = [np.zeros(1, dtype=np.int64)]
     rows = 0

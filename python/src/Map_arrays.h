@@ -13,6 +13,7 @@
 
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,7 @@ struct Map_arrays {
   Real_array r, theta, uv;  // uv: n x 2, (r cos theta, r sin theta)
   Real_array normal, axis_u, axis_v;
   expmap::Solve_statistics statistics;  // the heat query's work; zeros for the other methods
+  double fold_free_radius = 0;          // as Local_map::fold_free_radius
 
   Map_arrays(const Map& map, const std::vector<std::size_t>& original)
       : source(row_of(original, map.source)),
@@ -57,7 +59,8 @@ struct Map_arrays {
         normal(vector3(map.normal)),
         axis_u(vector3(map.axis_u)),
         axis_v(vector3(map.axis_v)),
-        statistics(map.statistics) {
+        statistics(map.statistics),
+        fold_free_radius(map.fold_free_radius.value_or(std::numeric_limits<double>::quiet_NaN())) {
     std::int64_t* vertex = vertices.mutable_data();
     for (std::size_t i = 0; i < map.size(); ++i) vertex[i] = row_of(original, map.indices[i]);
     double* p = uv.mutable_data();
@@ -69,23 +72,32 @@ struct Map_arrays {
 };
 
 /// Many maps, concatenated: rows offsets[i] to offsets[i + 1] belong to
-/// sources[i]; a source whose query failed has no rows and a non-empty
-/// errors[i]. Vertices are the caller's rows, as in `Map_arrays`.
+/// sources[i]; a source whose query failed has no rows, a non-empty
+/// errors[i] and a NaN fold_free_radius[i]. Vertices are the caller's rows,
+/// as in `Map_arrays`.
 struct Batch_arrays {
   Index_array sources, offsets, vertex;
   Real_array r, theta, u, v;
+  Real_array fold_free_radius;  // one per source
   std::vector<std::string> errors;
 
   Batch_arrays(const std::vector<std::size_t>& source_indices, const std::vector<Map>& maps,
                std::vector<std::string> messages, const std::vector<std::size_t>& original)
       : sources(static_cast<py::ssize_t>(source_indices.size())),
         offsets(static_cast<py::ssize_t>(source_indices.size() + 1)),
+        fold_free_radius(static_cast<py::ssize_t>(source_indices.size())),
         errors(std::move(messages)) {
     std::copy(source_indices.begin(), source_indices.end(), sources.mutable_data());
     std::int64_t* offset = offsets.mutable_data();
     offset[0] = 0;
-    for (std::size_t i = 0; i < maps.size(); ++i)
+    double* radius = fold_free_radius.mutable_data();
+    for (std::size_t i = 0; i < maps.size(); ++i) {
       offset[i + 1] = offset[i] + static_cast<std::int64_t>(maps[i].size());
+      // A successful map holds at least its source, a failed one nothing.
+      radius[i] = maps[i].size() > 0 && maps[i].fold_free_radius
+                      ? *maps[i].fold_free_radius
+                      : std::numeric_limits<double>::quiet_NaN();
+    }
     const py::ssize_t rows = static_cast<py::ssize_t>(offset[maps.size()]);
     vertex = Index_array(rows), r = Real_array(rows), theta = Real_array(rows);
     u = Real_array(rows), v = Real_array(rows);
@@ -112,6 +124,7 @@ struct Batch_arrays {
     py::dict d;
     d["sources"] = sources, d["offsets"] = offsets, d["vertex"] = vertex;
     d["r"] = r, d["theta"] = theta, d["u"] = u, d["v"] = v;
+    d["fold_free_radius"] = fold_free_radius;
     return d;
   }
 };

@@ -170,10 +170,13 @@ expmap::Patch mesh_patch(const Bound_method<Method>& b, std::size_t source,
   return expmap::Patch::vertex_set(std::move(vertices));
 }
 
-/// The shared query options from `reference`: None or 3 numbers (the
-/// library checks that they are finite and not along the normal).
-expmap::Query_options shared_query_argument(py::handle reference) {
+/// The shared query options from `reference` (None or 3 numbers; the
+/// library checks that they are finite and not along the normal) and
+/// `trim_folds`.
+expmap::Query_options shared_query_argument(py::handle reference, bool trim_folds) {
   expmap::Query_options query;
+  query.trim_folds = trim_folds;
+  query.find_fold_free_radius = true;  // LocalMap.fold_free_radius, BatchMaps.fold_free_radius
   if (reference.is_none()) return query;
   py::array array = py::array::ensure(reference);
   if (!array || array.ndim() != 1 || array.shape(0) != 3 ||
@@ -223,9 +226,9 @@ double number_argument(py::handle value, const char* name) {
 /// the methods without settings of their own take no other keyword.
 template <class Method>
 typename Method::Query query_argument(const char* function, py::handle reference,
-                                      const py::kwargs& settings) {
+                                      bool trim_folds, const py::kwargs& settings) {
   for (auto item : settings) unexpected_keyword(function, item.first);
-  return shared_query_argument(reference);
+  return shared_query_argument(reference, trim_folds);
 }
 
 /// Whether `key` names one of the heat method's query settings.
@@ -239,8 +242,8 @@ bool is_heat_query_setting(const std::string& key) {
 /// The heat method's query settings (Heat_query_options) by keyword.
 template <>
 expmap::Heat_query_options query_argument<expmap::Heat_exponential_map<Mesh>>(
-    const char* function, py::handle reference, const py::kwargs& settings) {
-  expmap::Heat_query_options query(shared_query_argument(reference));
+    const char* function, py::handle reference, bool trim_folds, const py::kwargs& settings) {
+  expmap::Heat_query_options query(shared_query_argument(reference, trim_folds));
   for (auto item : settings) {
     const std::string key = py::str(item.first);
     const py::handle value = item.second;
@@ -316,7 +319,9 @@ const char* const patch_doc =
     "``vertices`` (the k nearest vertices) or ``vertex_set`` (these vertex\n"
     "indices). ``reference`` is the direction of angle 0 (3 floats), projected\n"
     "onto the source's tangent plane; default: the x axis, or the y axis where\n"
-    "the normal is within 30 degrees of x.\n";
+    "the normal is within 30 degrees of x. ``trim_folds=True`` cuts each map to\n"
+    "its fold-free disk: only the vertices nearer than ``fold_free_radius``\n"
+    "(the source always) stay, so no triangle of the result is flipped.\n";
 
 /// compute(), compute_many() and the shared properties of every method class.
 template <class Method>
@@ -326,11 +331,12 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute",
       [](const Bound& b, py::handle source, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference, const py::kwargs& settings) {
+         py::handle reference, bool trim_folds, const py::kwargs& settings) {
         const std::size_t s = source_argument(b, source);
         const expmap::Patch patch =
             mesh_patch(b, s, patch_argument(b, radius, fraction, vertices, vertex_set));
-        const typename Method::Query query = query_argument<Method>("compute", reference, settings);
+        const typename Method::Query query =
+            query_argument<Method>("compute", reference, trim_folds, settings);
         Map map;
         {
           py::gil_scoped_release release;
@@ -341,8 +347,9 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       py::arg("source"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
       py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
+      py::arg("trim_folds") = false,
       (std::string("compute(source, *, radius=None, fraction=None, vertices=None, "
-                   "vertex_set=None, reference=None) -> LocalMap\n\n"
+                   "vertex_set=None, reference=None, trim_folds=False) -> LocalMap\n\n"
                    "Geodesic polar coordinates around vertex ``source`` (0-based row of\n"
                    "the vertex array). ") +
        patch_doc +
@@ -355,12 +362,13 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference, py::handle threads_object, const py::kwargs& settings) {
+         py::handle reference, py::handle threads_object, bool trim_folds,
+         const py::kwargs& settings) {
         const Index_array checked = checked_indices(sources_object, "sources", b.rows);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
         const typename Method::Query query =
-            query_argument<Method>("compute_many", reference, settings);
+            query_argument<Method>("compute_many", reference, trim_folds, settings);
         const std::size_t threads = index_argument(threads_object, "threads");
         if (threads > 4096)
           throw expmap::Invalid_input("threads must be at most 4096 (got " +
@@ -383,9 +391,10 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       py::arg("sources"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
       py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
-      py::arg("threads") = 0,
+      py::arg("threads") = 0, py::arg("trim_folds") = false,
       (std::string("compute_many(sources, *, radius=None, fraction=None, vertices=None, "
-                   "vertex_set=None, reference=None, threads=0) -> BatchMaps\n\n"
+                   "vertex_set=None, reference=None, threads=0, trim_folds=False)\n"
+                   "    -> BatchMaps\n\n"
                    "One map per source (a 1-D integer array), computed on ``threads``\n"
                    "threads (0: one per core) without holding the GIL. ") +
        patch_doc +
@@ -517,7 +526,7 @@ void bind_heat(py::module_& m) {
       "near_source_blend_at",
       [](const Bound& b, py::handle source, const py::kwargs& settings) {
         const expmap::Heat_query_options query =
-            query_argument<Method>("near_source_blend_at", py::none(), settings);
+            query_argument<Method>("near_source_blend_at", py::none(), false, settings);
         const expmap::Near_source_blend blend =
             b.method->near_source_blend_at(source_argument(b, source), query);
         return std::make_pair(blend.begin, blend.end);
@@ -609,6 +618,10 @@ PYBIND11_MODULE(_expmap, m) {
       .def_readonly("normal", &Map_arrays::normal, "Unit normal of the tangent plane.")
       .def_readonly("axis_u", &Map_arrays::axis_u, "Tangent axis of angle 0.")
       .def_readonly("axis_v", &Map_arrays::axis_v, "Tangent axis of angle pi/2.")
+      .def_readonly("fold_free_radius", &Map_arrays::fold_free_radius,
+                    "Where the map is one-to-one: the largest r such that no triangle with\n"
+                    "all corners nearer than r is flipped or collapsed in uv; max(r) if\n"
+                    "none is flipped.")
       .def_property_readonly(
           "statistics",
           [](const Map_arrays& a) {
@@ -666,11 +679,14 @@ PYBIND11_MODULE(_expmap, m) {
       .def_readonly("theta", &Batch_arrays::theta, "Polar angle of each row.")
       .def_readonly("u", &Batch_arrays::u, "r cos theta of each row.")
       .def_readonly("v", &Batch_arrays::v, "r sin theta of each row.")
+      .def_readonly("fold_free_radius", &Batch_arrays::fold_free_radius,
+                    "Per source: its map's fold-free radius (LocalMap.fold_free_radius;\n"
+                    "NaN where the query failed).")
       .def_readonly("errors", &Batch_arrays::errors, "Per source: '' or why its query failed.")
       .def_property_readonly("failures", &Batch_arrays::failures, "How many queries failed.")
       .def("as_dict", &Batch_arrays::as_dict,
-           "The seven arrays by name (sources, offsets, vertex, r, theta, u, v), as\n"
-           "numpy.savez takes them.")
+           "The eight arrays by name (sources, offsets, vertex, r, theta, u, v,\n"
+           "fold_free_radius), as numpy.savez takes them.")
       .def("__len__", [](const Batch_arrays& b) { return b.errors.size(); })
       .def(
           "__getitem__",

@@ -22,7 +22,8 @@ def main():
                    check=True, stdout=subprocess.DEVNULL)
 
     data = numpy.load(npz_path)
-    assert sorted(data.files) == sorted(["sources", "offsets", "vertex", "r", "theta", "u", "v"]), data.files
+    assert sorted(data.files) == sorted(["sources", "offsets", "vertex", "r", "theta", "u", "v",
+                                         "fold_free_radius"]), data.files
     assert data["sources"].tolist() == sources
     offsets = data["offsets"]
     assert offsets.shape == (len(sources) + 1,) and offsets[0] == 0
@@ -41,6 +42,14 @@ def main():
     for name in ["r", "theta", "u", "v"]:
         # 17 significant digits in the CSV: the same doubles, bit for bit.
         assert numpy.array_equal(numpy.array([float(row[name]) for row in table]), data[name]), name
+    # The fold-free radius: one per map, on each of its CSV rows, within its patch.
+    radius = data["fold_free_radius"]
+    assert radius.dtype == numpy.float64 and radius.shape == (len(sources),)
+    expected_radius = numpy.repeat(radius, numpy.diff(offsets))
+    assert numpy.array_equal(numpy.array([float(row["fold_free_radius"]) for row in table]),
+                             expected_radius)
+    for i in range(len(sources)):
+        assert 0 < radius[i] <= data["r"][offsets[i]:offsets[i + 1]].max(), i
     # Each map starts at its source, at distance 0.
     assert numpy.array_equal(data["vertex"][offsets[:-1]], data["sources"])
     assert numpy.all(data["r"][offsets[:-1]] == 0)

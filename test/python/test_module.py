@@ -40,7 +40,8 @@ def test_batch_equals_single_queries(elephant, method, threads):
         np.testing.assert_array_equal(batch.theta[rows], local.theta)
         np.testing.assert_array_equal(batch.u[rows], local.uv[:, 0])
         np.testing.assert_array_equal(batch.v[rows], local.uv[:, 1])
-    assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v"}
+    assert set(batch.as_dict()) == {"sources", "offsets", "vertex", "r", "theta", "u", "v",
+                                    "fold_free_radius"}
 
 
 def test_batch_maps_index_and_iterate_as_views(heat):

@@ -200,6 +200,59 @@ std::vector<std::string> csv_column(const fs::path& path, int k) {
   return column;
 }
 
+// The number after `label` in the summary on stdout (NaN if missing).
+double summary_number(const std::string& out, const std::string& label) {
+  const std::string::size_type at = out.find(label);
+  if (at == std::string::npos) return std::nan("");
+  return std::stod(out.substr(at + label.size()));
+}
+
+// A 5% patch of the camel that every method folds: the summary gives its
+// fold-free radius, and --trim-folds keeps exactly the vertices inside it,
+// none of whose triangles is flipped, in compute and in batch.
+BOOST_AUTO_TEST_CASE(trim_folds_keeps_the_fold_free_disk) {
+  const std::string mesh = "'" + std::string(EXPMAP_TEST_DATA_DIR) + "/camel.off'";
+  for (const char* method : {"heat", "dem", "dgpc", "exact"}) {
+    BOOST_TEST_CONTEXT("--method " << method) {
+      const std::string command = "compute " + mesh + " --source 79 --fraction 0.05 --method " +
+                                  method + " -o " + file("whole.csv");
+      BOOST_TEST_REQUIRE(run(command) == 0, err());
+      const std::string summary = out();
+      const double radius = summary_number(summary, "fold-free:");
+      const double max_r = summary_number(summary, "max r:");
+      BOOST_TEST(summary_number(summary, "flipped:") > 0);
+      BOOST_TEST((radius > 0 && radius < max_r), summary);
+      BOOST_TEST(summary.find(" of max r)") != std::string::npos, summary);
+
+      BOOST_TEST_REQUIRE(run("compute " + mesh + " --source 79 --fraction 0.05 --method " +
+                             method + " --trim-folds -o " + file("trimmed.csv")) == 0,
+                         err());
+      BOOST_TEST(summary_number(out(), "flipped:") == 0, out());
+      // The whole map's rows nearer than the radius, and only those: the
+      // rows come nearest first, so they are its first rows, and the next
+      // one is at the radius (the summary prints it to 6 digits).
+      const std::vector<std::string> whole = read_lines(dir / "whole.csv");
+      std::vector<std::string> trimmed = read_lines(dir / "trimmed.csv");
+      trimmed.erase(trimmed.begin());
+      BOOST_TEST_REQUIRE(trimmed.size() > 1u);
+      BOOST_TEST_REQUIRE(trimmed.size() + 1 < whole.size());
+      const std::vector<std::string> prefix(whole.begin() + 1, whole.begin() + 1 + trimmed.size());
+      BOOST_TEST(trimmed == prefix, boost::test_tools::per_element());
+      auto r_of = [](const std::string& row) { return std::stod(row.substr(row.find(',') + 1)); };
+      BOOST_TEST(r_of(trimmed.back()) < radius * (1 + 1e-5));
+      BOOST_TEST(r_of(whole[trimmed.size() + 1]) > radius * (1 - 1e-5));
+
+      BOOST_TEST_REQUIRE(run("batch " + mesh + " --sources 79 --fraction 0.05 --method " + method +
+                             " --trim-folds -o " + file("batch.csv")) == 0,
+                         err());
+      const std::vector<std::string> rows = read_lines(dir / "batch.csv");
+      BOOST_TEST_REQUIRE(rows.size() == trimmed.size() + 1);
+      for (std::size_t i = 0; i < trimmed.size(); ++i)
+        BOOST_TEST(rows[i + 1].rfind("79," + trimmed[i] + ",", 0) == 0u, rows[i + 1]);
+    }
+  }
+}
+
 BOOST_AUTO_TEST_CASE(single_precision_factors_give_distances_to_float_round_off) {
   const std::string query = "compute " + file("grid.off") + " --source 24 --vertices 20";
   BOOST_TEST_REQUIRE(run(query + " -o " + file("double.csv")) == 0, "stderr: " << err());
@@ -246,7 +299,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
         "--laplacian", "--vertex-area", "--factor-precision", "--angles",
         "--query-threads", "--near-source-blend",
         "--reference",
-        "--no-triangulate", "--repair", "--output"})
+        "--no-triangulate", "--repair", "--trim-folds", "--output", "fold-free"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
@@ -321,13 +374,23 @@ BOOST_AUTO_TEST_CASE(rows_equal_one_compute_per_source) {
       BOOST_TEST(err().empty(), err());  // no progress bar when stderr is not a terminal
       const auto lines = read_lines(dir / "batch.csv");
       BOOST_TEST_REQUIRE(lines.size() == 41u);
-      BOOST_TEST(lines[0] == "source,vertex,r,theta,u,v");
+      BOOST_TEST(lines[0] == "source,vertex,r,theta,u,v,fold_free_radius");
       std::size_t row = 1;
       for (const char* source : {"24", "0", "24", "48"}) {
         BOOST_TEST_REQUIRE(run("compute " + file("grid.off") + " --source " + source +
                                " --vertices 10 --method " + method + " -o " + file("one.csv")) == 0);
-        for (const std::string& expected : csv_rows(dir / "one.csv"))
-          BOOST_TEST(lines[row++] == std::string(source) + "," + expected);
+        // The map's fold-free radius ends each of its rows; a flat grid
+        // does not fold, so it is the map's largest r.
+        const std::vector<std::string> expected_rows = csv_rows(dir / "one.csv");
+        double largest = 0;
+        for (const std::string& expected : expected_rows)
+          largest = std::max(largest, std::stod(expected.substr(expected.find(',') + 1)));
+        for (const std::string& expected : expected_rows) {
+          const std::string& line = lines[row++];
+          const std::string prefix = std::string(source) + "," + expected + ",";
+          BOOST_TEST(line.rfind(prefix, 0) == 0u, line);
+          BOOST_TEST(std::stod(line.substr(prefix.size())) == largest, line);
+        }
       }
     }
   }
@@ -387,7 +450,7 @@ BOOST_AUTO_TEST_CASE(writes_npz) {
   BOOST_TEST(npz.substr(0, 4) == std::string("PK\x03\x04", 4));
   BOOST_TEST(npz.substr(npz.size() - 22, 4) == std::string("PK\x05\x06", 4));
   for (const char* name : {"sources.npy", "offsets.npy", "vertex.npy", "r.npy", "theta.npy", "u.npy",
-                           "v.npy"})
+                           "v.npy", "fold_free_radius.npy"})
     BOOST_TEST(npz.find(name) != std::string::npos, name);
 }
 
@@ -423,8 +486,8 @@ BOOST_AUTO_TEST_CASE(indices_are_the_files_when_reading_renumbers) {
       for (const std::string& source : sources) {
         BOOST_TEST_REQUIRE(
             run("compute " + patch + " --source " + source + " -o " + file("one.csv")) == 0, err());
-        for (const std::string& one : csv_rows(dir / "one.csv"))
-          BOOST_TEST(rows.at(row++) == source + "," + one);
+        for (const std::string& one : csv_rows(dir / "one.csv"))  // then the fold-free radius
+          BOOST_TEST(rows.at(row++).rfind(source + "," + one + ",", 0) == 0u);
       }
       BOOST_TEST(row == rows.size());
       // After the note on reading, the error (so not check_error).
@@ -448,7 +511,8 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
         "--time-factor", "--laplacian", "--vertex-area", "--factor-precision",
         "--query-threads", "--angles",
         "--near-source-blend", "--reference",
-        "--no-triangulate", "--repair", "--output", ".npz", "expmap: warning:"})
+        "--no-triangulate", "--repair", "--trim-folds", "--output", ".npz", "fold_free_radius",
+        "expmap: warning:"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
   BOOST_TEST_REQUIRE(run("--help") == 0);
   BOOST_TEST(out().find("batch") != std::string::npos);

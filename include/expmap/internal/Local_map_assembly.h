@@ -3,12 +3,18 @@
 #ifndef EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 #define EXPMAP_INTERNAL_LOCAL_MAP_ASSEMBLY_H
 
+#include <expmap/Fold_free_radius.h>
 #include <expmap/Local_map.h>
+#include <expmap/Patch.h>
+#include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Nearest_first.h>
+#include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Tangent_frame.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace expmap {
@@ -32,14 +38,58 @@ inline double wrap_angle(double a) {
   return a;
 }
 
+/// The fold-free disk of `map`, which must be nearest first, from the faces
+/// of `mesh`: the same triangles `patch_triangles()` finds in the user's
+/// mesh, and the same disk as `fold_free_radius()`. `map.indices` are the
+/// user's indices; `mesh` may be renumbered. `position`, sized to the mesh,
+/// is scratch (a hash map would cost a good part of a small query).
+///
+/// Every patch face is read once, from the faces its smallest corner owns
+/// (stored with that vertex): the pass is one of the query's cheapest.
+template <class VertexDescriptor>
+Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDescriptor>& map,
+                              Vertex_marks& position) {
+  Fold_free_disk disk;
+  if (map.size() == 0) return disk;
+  disk.radius = map.distance.back();
+  position.next_query();
+  for (std::size_t i = 0; i < map.size(); ++i)
+    position.mark(mesh.from_original(map.indices[i]), static_cast<int>(i));
+  std::vector<std::array<double, 2>> uv;  // each vertex's once: sines and cosines are the cost
+  uv.reserve(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) uv.push_back(map.uv(i));
+  const auto uv_of = [&](std::size_t i) { return uv[i]; };
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const int v = mesh.from_original(map.indices[i]);
+    for (int p = mesh.owned_face_start[v]; p < mesh.owned_face_start[v + 1]; ++p) {
+      const std::array<int, 3>& face = mesh.owned_face[p];
+      if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
+      const std::array<std::size_t, 3> corner{{i, static_cast<std::size_t>(position.value(face[1])),
+                                               static_cast<std::size_t>(position.value(face[2]))}};
+      if (signed_uv_area2(uv_of, corner) > 0) continue;
+      disk.folds = true;
+      disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]],
+                                                    map.distance[corner[1]],
+                                                    map.distance[corner[2]]}));
+    }
+  }
+  return disk;
+}
+
 /// Fills a `Local_map` the way every method reports it: the source first
 /// (r = 0, theta = 0), then the entries nearest first (ties by vertex
-/// index, so results do not depend on traversal order). Entries for the
-/// source itself are dropped. `entries` is sorted in place.
+/// index, so results do not depend on traversal order), with its fold-free
+/// radius if `query` asks for it, cut to that disk if `query.trim_folds`.
+/// Entries for the source itself are dropped. `entries` is sorted in place; their vertices and `source`
+/// are indices of the user's mesh, which `mesh` stores (maybe renumbered).
+/// `position` is scratch for `fold_free_disk()`.
 template <class VertexDescriptor>
-Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_entry>& entries,
+Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
+                                               std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,
-                                               const Tangent_frame& frame) {
+                                               const Tangent_frame& frame,
+                                               const Query_options& query,
+                                               Vertex_marks& position) {
   auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
@@ -66,6 +116,12 @@ Local_map<VertexDescriptor> assemble_local_map(int source, std::vector<Polar_ent
   add(source, 0.0, 0.0);
   for (const Polar_entry& e : entries)
     if (e.vertex != source) add(e.vertex, e.distance, wrap_angle(e.angle));
+  if (!query.trim_folds && !query.find_fold_free_radius) return map;
+  const Fold_free_disk disk = fold_free_disk(mesh, map, position);
+  if (query.trim_folds)
+    trim_to_disk(map, disk);
+  else
+    map.fold_free_radius = disk.radius;
   return map;
 }
 

@@ -34,6 +34,10 @@ struct Mesh_arrays {
   std::vector<std::array<int, 3>> face;
   std::vector<int> vertex_face_start, vertex_face;  // vertex -> incident faces (CSR)
   std::vector<int> neighbor_start, neighbor;        // vertex -> adjacent vertices (CSR)
+  // Each face once, under its smallest corner and rotated to start there
+  // (the orientation kept): a set of vertices' faces, read contiguously.
+  std::vector<int> owned_face_start;                // vertex -> the faces it owns (CSR)
+  std::vector<std::array<int, 3>> owned_face;
   std::vector<double> neighbor_distance;            // length of each of those edges
   std::vector<int> component;                       // connected component of each vertex
   std::vector<int> component_size;
@@ -92,6 +96,17 @@ inline void compute_adjacency(Mesh_arrays& m) {
           for (int v : m.face[f]) push(v, static_cast<int>(f));
       },
       m.vertex_face_start, m.vertex_face);
+
+  std::vector<int> owned(n, 0);
+  for (const auto& f : m.face) ++owned[*std::min_element(f.begin(), f.end())];
+  m.owned_face_start.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) m.owned_face_start[v + 1] = m.owned_face_start[v] + owned[v];
+  m.owned_face.resize(m.face.size());
+  std::vector<int> cursor(m.owned_face_start.begin(), m.owned_face_start.end() - 1);
+  for (auto f : m.face) {
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    m.owned_face[cursor[f[0]]++] = f;
+  }
 
   // Neighbours: the other two corners of every incident face, deduplicated.
   Vertex_adjacency adjacency = vertex_adjacency(n, m.face);

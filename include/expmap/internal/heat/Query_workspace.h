@@ -65,6 +65,7 @@ struct Workspace {
     in_region.resize(n);
     seen.resize(n);
     wanted.resize(n);
+    map_position.resize(n);
   }
 
   /// Widens the star solves' workspaces for `estimator` if they are
@@ -90,6 +91,7 @@ struct Workspace {
   // thread each, never holds it.
   Localized_cholesky_solver::Workspace region_star_solve;
   Vertex_marks in_region, seen, wanted;
+  Vertex_marks map_position;  // assemble_local_map's scratch
   std::vector<double> tentative;
 
   // Steps 1 and 2: candidates, source heat, region.
