@@ -6,6 +6,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -18,7 +20,8 @@ using namespace expmap_test;
 namespace {
 
 struct Planar_errors {
-  double angle = 0;  // mean |theta - exact| up to rotation
+  double angle = 0;     // mean |theta - exact| up to rotation
+  double distance = 0;  // largest |r - exact|, relative to the radius
   std::size_t flipped = 0, triangles = 0;
 };
 
@@ -26,14 +29,19 @@ Planar_errors planar_errors(const expmap_analytic::Triangle_soup& soup, const Su
                             const expmap::Heat_exponential_map<Surface_mesh>& heat, std::size_t s) {
   const auto map = heat.compute_by_index(s, expmap::Patch::geodesic_radius(0.4));
   std::vector<double> computed, exact;
+  double distance = 0;
   for (std::size_t i = 1; i < map.size(); ++i) {
+    const auto& p = soup.points[s];
+    const auto& q = soup.points[map.indices[i]];
+    const double chord = std::hypot(q[0] - p[0], q[1] - p[1]);
+    distance = std::max(distance, std::abs(map.distance[i] - chord) / 0.4);
     computed.push_back(map.angle[i]);
     exact.push_back(expmap_analytic::plane_exponential_map(soup.points[s],
                                                            soup.points[map.indices[i]], map.axis_u)
                         .theta_unrotated);
   }
   const auto folds = expmap::count_flipped_triangles(mesh, map);
-  return {mean_angle_error_up_to_rotation(computed, exact), folds.flipped, folds.total};
+  return {mean_angle_error_up_to_rotation(computed, exact), distance, folds.flipped, folds.total};
 }
 
 void check_rows_from_the_edge(const expmap_analytic::Triangle_soup& soup, int nx, const char* name,
@@ -46,15 +54,19 @@ void check_rows_from_the_edge(const expmap_analytic::Triangle_soup& soup, int nx
   for (int row : {0, 1, 2, 5}) {
     const std::size_t s = expmap_analytic::grid_vertex_index(nx, nx / 2, row);
     const Planar_errors e = planar_errors(soup, mesh, heat, s);
-    BOOST_TEST_MESSAGE(name << ", row " << row << ": mean angle error " << e.angle << ", "
+    BOOST_TEST_MESSAGE(name << ", row " << row << ": mean angle error " << e.angle
+                            << ", largest distance error " << e.distance << " of the radius, "
                             << e.flipped << " of " << e.triangles << " triangles flipped");
     BOOST_TEST_CONTEXT(name << ", row " << row) {
       BOOST_TEST(e.angle < angle_bound);
-      // Two rows in, the two triangles between the source's column and the
-      // edge below it fold: the Neumann heat's distance to the edge vertex
-      // is shorter than to its neighbour one row up. Without the Dirichlet
-      // half most of the patch folds.
-      BOOST_TEST(e.flipped * 100 <= e.triangles);
+      // Off the edge the distance comes from the mean of the Neumann and the
+      // Dirichlet heat: from the Neumann heat alone the largest error is
+      // 4.8%, 9.2% and 14% of the radius one, two and five rows in, and two
+      // rows in the two triangles between the source and the edge fold
+      // (measured); with the mean, 1.2-2.9% and no fold. Without the
+      // Dirichlet half of the angles' heat most of the patch folds.
+      BOOST_TEST(e.distance < 0.035);
+      BOOST_TEST(e.flipped == 0u);
     }
   }
 }

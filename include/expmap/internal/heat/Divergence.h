@@ -21,6 +21,7 @@ namespace heat {
 // system's right-hand side must.
 inline void normalized_heat_gradient_divergence(const Context& c, Workspace& ws) {
   ws.divergence.assign(ws.region.size(), 0.0);
+  const std::vector<double>& heat = ws.distance_heat.empty() ? ws.region_heat : ws.distance_heat;
   for (const int v : ws.region_by_index) {
     for (auto f = c.factors.faces.begin(v); f != c.factors.faces.end(v); ++f) {
       const auto& corner = f->corner;
@@ -31,7 +32,7 @@ inline void normalized_heat_gradient_divergence(const Context& c, Workspace& ws)
       std::array<double, 3> u;
       for (int k = 0; k < 3; ++k) {
         at[k] = ws.in_region.value(corner[k]);
-        u[k] = ws.region_heat[static_cast<std::size_t>(at[k])];
+        u[k] = heat[static_cast<std::size_t>(at[k])];
       }
       const auto div = normalized_gradient_divergence(f->divergence, u);
       for (int k = 0; k < 3; ++k) ws.divergence[static_cast<std::size_t>(at[k])] += div[k];

@@ -103,6 +103,7 @@ struct Workspace {
   std::vector<int> region;             // the hottest candidates: where distance is integrated
   std::vector<std::size_t> heat_row;   // row of each region vertex in `heat`, ascending
   std::vector<double> region_heat;     // `heat` at each region vertex
+  std::vector<double> distance_heat;   // the heat the distance is read from, if not region_heat
   std::vector<int> region_by_index;    // the region in vertex order (memory order)
   std::vector<int> cut_short_at;       // hottest candidates on the candidates' edge
   // Scratch of those steps.
