@@ -53,11 +53,12 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
   if (map.size() == 0) return disk;
   disk.radius = map.distance.back();
   position.next_query();
-  for (std::size_t i = 0; i < map.size(); ++i)
-    position.mark(mesh.from_original(map.indices[i]), static_cast<int>(i));
   std::vector<std::array<double, 2>> uv;  // each vertex's once: sines and cosines are the cost
   uv.reserve(map.size());
-  for (std::size_t i = 0; i < map.size(); ++i) uv.push_back(map.uv(i));
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    position.mark(mesh.from_original(map.indices[i]), static_cast<int>(i));
+    uv.push_back(map.uv(i));
+  }
   const auto uv_of = [&](std::size_t i) { return uv[i]; };
   for (std::size_t i = 0; i < map.size(); ++i) {
     const int v = mesh.from_original(map.indices[i]);
@@ -80,8 +81,9 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
 /// (r = 0, theta = 0), then the entries nearest first (ties by vertex
 /// index, so results do not depend on traversal order), with its fold-free
 /// radius if `query` asks for it, cut to that disk if `query.trim_folds`.
-/// Entries for the source itself are dropped. `entries` is sorted in place; their vertices and `source`
-/// are indices of the user's mesh, which `mesh` stores (maybe renumbered).
+/// Entries for the source itself are dropped. `entries` is sorted in place;
+/// their vertices and `source` are indices of the user's mesh, which `mesh`
+/// stores (maybe renumbered).
 /// `position` is scratch for `fold_free_disk()`.
 template <class VertexDescriptor>
 Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,

@@ -51,7 +51,6 @@ struct Heat_factors {
   Vertex_adjacency neighbors;      // the stars the angles are fitted on
   std::vector<char> is_pinned;     // one vertex per component in the Poisson system
   double time_step = 0;            // t = time_factor h^2
-  double time_factor = 0;          // of the options
   double mean_vertex_area = 0;     // the mass matrix's mean: the area per vertex
   // The heat matrix A = M + tL is an M-matrix (no positive off-diagonal
   // entry): its inverse factor is then nonnegative, so the source heat can
@@ -164,7 +163,6 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
                                    : lumped_mass(tri, shapes);
   f.mean_vertex_area = mass.sum() / static_cast<double>(std::max<Eigen::Index>(1, mass.size()));
   const double h2 = mesh.mean_edge_length * mesh.mean_edge_length;
-  f.time_factor = options.time_factor;
   f.time_step = options.time_factor * h2;
 
   // Identity rows need a zero right-hand side: isolated vertices get none,

@@ -8,7 +8,6 @@
 
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Kth_largest.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Parallel_loop.h>
 #include <expmap/internal/Star_gradient.h>
@@ -77,39 +76,6 @@ inline Solve_statistics find_region(const Context& c, int s, const Patch& patch,
   return stats;
 }
 
-// Near a boundary, the distance is read from the mean of the Neumann and
-// the Dirichlet heat from s (Crane et al. 2013, section 3.3) on the region.
-// A source on the boundary has no Dirichlet heat: its distance keeps the
-// Neumann heat. Only where the boundary reaches the patch (its `target`
-// hottest vertices; a radius patch: the region): farther off, a hole's zero
-// heat would only bend the distance towards it.
-inline Solve_statistics average_boundary_heat(const Context& c, int s, std::size_t target,
-                                              Workspace& ws) {
-  ws.distance_heat.clear();
-  if (!c.factors.has_boundary() || c.factors.is_boundary[static_cast<std::size_t>(s)])
-    return {};
-  double hottest_kept = 0;
-  if (target > 0 && target < ws.region.size()) {
-    std::size_t larger = 0;
-    hottest_kept = kth_largest(
-        ws.region.size(), target, [&](std::size_t i) { return ws.region_heat[i]; },
-        ws.heat_values, larger);
-  }
-  bool reaches_patch = false;
-  for (std::size_t i = 0; i < ws.region.size() && !reaches_patch; ++i)
-    reaches_patch = c.factors.is_boundary[static_cast<std::size_t>(ws.region[i])] &&
-                    ws.region_heat[i] >= hottest_kept;
-  if (!reaches_patch) return {};
-  ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
-  ws.distance_heat.resize(ws.region.size());
-  const Solve_statistics stats =
-      c.factors.boundary_heat.solve(ws.rhs, 1, ws.region.data(), ws.region.size(),
-                                    ws.distance_heat.data(), ws.boundary_heat_solve);
-  for (std::size_t i = 0; i < ws.region.size(); ++i)
-    ws.distance_heat[i] = 0.5 * (ws.region_heat[i] + ws.distance_heat[i]);
-  return stats;
-}
-
 /// The polar coordinates of `patch` around source s (renumbered) in the
 /// tangent frame `frame`: `target` and `wanted` as `patch_target_count` and
 /// `checked_vertex_set` give them. Adds the solves' statistics to `stats`.
@@ -130,6 +96,7 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
     stats +=
         find_region(c, s, patch, target, wanted, component, growth, retry, whole_component, ws);
 
+    // Step 2 near a boundary: the heat the distance is read from.
     stats += average_boundary_heat(c, s, target, ws);
 
     // Steps 3 and 4; with a second thread, step 6 beside them, on the whole region

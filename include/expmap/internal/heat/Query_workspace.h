@@ -28,7 +28,7 @@ struct Context {
         factors(factors),
         options(options),
         query(query),
-        estimator(angle_estimator_at(query.angle_estimator, factors.time_factor)),
+        estimator(angle_estimator_at(query.angle_estimator, options.time_factor)),
         pruning_tolerance(factors.heat_is_m_matrix ? query.pruning_tolerance : 0.0) {}
 
   const Mesh_arrays& mesh;  // renumbered along locality_order

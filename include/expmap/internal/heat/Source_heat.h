@@ -5,11 +5,13 @@
 
 // Step 2 (manual, section 2): the heat from the source, A h = e_s, solved
 // on the candidates or, with an M-matrix, largest first until the region is
-// known; pruned on small patches of large meshes.
+// known; pruned on small patches of large meshes. Where the boundary reaches
+// the patch, also the Dirichlet heat, for the distance.
 
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Bessel_k0.h>
+#include <expmap/internal/Kth_largest.h>
 #include <expmap/internal/heat/Query_workspace.h>
 #include <expmap/internal/heat/Region.h>
 
@@ -213,6 +215,39 @@ inline Solve_statistics confirm_pruned_source_heat(const Context& c, int s, bool
                            : solve_source_heat_below(c, s, ws);
     choose_region(kept, ws);
   }
+  return stats;
+}
+
+// Near a boundary, the distance is read from the mean of the Neumann and
+// the Dirichlet heat from s (Crane et al. 2013, section 3.3) on the region.
+// A source on the boundary has no Dirichlet heat: its distance keeps the
+// Neumann heat. Only where the boundary reaches the patch (its `target`
+// hottest vertices; a radius patch: the region): farther off, a hole's zero
+// heat would only bend the distance towards it.
+inline Solve_statistics average_boundary_heat(const Context& c, int s, std::size_t target,
+                                              Workspace& ws) {
+  ws.distance_heat.clear();
+  if (!c.factors.has_boundary() || c.factors.is_boundary[static_cast<std::size_t>(s)])
+    return {};
+  double hottest_kept = 0;
+  if (target > 0 && target < ws.region.size()) {
+    std::size_t larger = 0;
+    hottest_kept = kth_largest(
+        ws.region.size(), target, [&](std::size_t i) { return ws.region_heat[i]; },
+        ws.heat_values, larger);
+  }
+  bool reaches_patch = false;
+  for (std::size_t i = 0; i < ws.region.size() && !reaches_patch; ++i)
+    reaches_patch = c.factors.is_boundary[static_cast<std::size_t>(ws.region[i])] &&
+                    ws.region_heat[i] >= hottest_kept;
+  if (!reaches_patch) return {};
+  ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
+  ws.distance_heat.resize(ws.region.size());
+  const Solve_statistics stats =
+      c.factors.boundary_heat.solve(ws.rhs, 1, ws.region.data(), ws.region.size(),
+                                    ws.distance_heat.data(), ws.boundary_heat_solve);
+  for (std::size_t i = 0; i < ws.region.size(); ++i)
+    ws.distance_heat[i] = 0.5 * (ws.region_heat[i] + ws.distance_heat[i]);
   return stats;
 }
 
