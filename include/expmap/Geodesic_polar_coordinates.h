@@ -13,6 +13,7 @@
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Point_source.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Source_one_ring.h>
@@ -103,6 +104,14 @@ class Geodesic_polar_coordinates
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
+  /// A point source that is no vertex (reached through `compute()` with a
+  /// `Surface_point`): the front starts at the face's corners and the
+  /// apexes of its neighbours, with the distances and angles of the face's
+  /// unfolding (`internal::point_one_ring()`), and propagates as from a
+  /// vertex. On a plane the map is exact, as from a vertex.
+  Result compute_at_point(const internal::Point_source& point, const Patch& patch,
+                          const Query_options& query = {}) const;
+
  private:
   struct Workspace {
     explicit Workspace(std::size_t n) : distance(n), angle(n) {
@@ -122,6 +131,13 @@ class Geodesic_polar_coordinates
     std::vector<internal::Polar_entry> entries;
   };
 
+  // Where the front starts: the vertices around the source with their
+  // distances and native angles.
+  struct Start {
+    internal::Source_one_ring ring;
+    std::vector<double> distance;
+  };
+
   struct Propagation {
     int source;
     bool closed;   // angles wrap modulo 2 pi
@@ -131,6 +147,9 @@ class Geodesic_polar_coordinates
   static bool improves(int j, double distance, const Workspace& ws) {
     return !ws.known.is_marked(j) || ws.distance[j] > distance * (1 + relative_improvement);
   }
+
+  Result propagate(const internal::Checked_query& q, int s, const Start& start, const Patch& patch,
+                   const Query_options& query) const;
 
   // Offers vertex j a distance through the edge (i, k) of one of its faces.
   void update(int j, int i, int k, const Propagation& run, Workspace& ws) const;
@@ -178,8 +197,36 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
   const internal::Checked_query q =
       internal::checked_query(m_indexed.arrays, source_index, patch, query);
   const int s = q.source;
-  const internal::Source_one_ring ring = internal::source_one_ring(m_indexed.arrays, s, q.frame);
+  Start start;
+  start.ring = internal::source_one_ring(m_indexed.arrays, s, q.frame);
+  for (int v : start.ring.vertex)
+    start.distance.push_back(internal::norm(m_indexed.arrays.point[v] - m_indexed.arrays.point[s]));
+  return propagate(q, s, start, patch, query);
+}
 
+template <class TM, class VPM>
+typename Geodesic_polar_coordinates<TM, VPM>::Result
+Geodesic_polar_coordinates<TM, VPM>::compute_at_point(const internal::Point_source& point,
+                                                       const Patch& patch,
+                                                       const Query_options& query) const {
+  const internal::Checked_query q =
+      internal::checked_point_query(m_indexed.arrays, point, patch, query);
+  internal::Point_ring ring = internal::point_one_ring(m_indexed.arrays, point, q.frame);
+  Start start;
+  start.ring = std::move(ring.ring);
+  start.distance = std::move(ring.distance);
+  return propagate(q, -1, start, patch, query);
+}
+
+template <class TM, class VPM>
+typename Geodesic_polar_coordinates<TM, VPM>::Result
+Geodesic_polar_coordinates<TM, VPM>::propagate(const internal::Checked_query& q, int s,
+                                                const Start& start, const Patch& patch,
+                                                const Query_options& query) const {
+  const internal::Source_one_ring& ring = start.ring;
+  // A vertex source is a row of the map; a point source is not, so a count
+  // patch takes one more propagated vertex.
+  const std::size_t source_rows = s >= 0 ? 1 : 0;
   auto ws = m_workspaces.acquire(
       [this] { return std::make_unique<Workspace>(this->number_of_vertices()); });
   ws->queue.clear();
@@ -193,16 +240,19 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
   Propagation run{s, ring.closed, std::numeric_limits<double>::infinity()};
   if (q.kind == Patch::Kind::geodesic_radius) run.limit = patch.radius();
   // Patches that the source alone fills need no propagation.
-  bool done = (q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && missing == 0);
+  bool done = (q.by_count && q.target <= source_rows) ||
+              (q.kind == Patch::Kind::vertex_set && missing == 0);
 
-  ws->known.mark(s, 0);
-  ws->distance[s] = 0;
-  ws->angle[s] = 0;
+  if (s >= 0) {
+    ws->known.mark(s, 0);
+    ws->distance[s] = 0;
+    ws->angle[s] = 0;
+  }
   for (std::size_t i = 0; i < ring.vertex.size() && !done; ++i) {
     const int v = ring.vertex[i];
     if (ws->known.is_marked(v)) continue;  // a non-manifold source lists it twice
     ws->known.mark(v, 0);
-    ws->distance[v] = internal::norm(m_indexed.arrays.point[v] - m_indexed.arrays.point[s]);
+    ws->distance[v] = start.distance[i];
     ws->angle[v] = ring.angle[i];
     if (ws->distance[v] <= run.limit) ws->queue.push_or_decrease(v, ws->distance[v]);
   }
@@ -215,7 +265,7 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
       ws->popped_order.push_back(v);
       farthest_popped = std::max(farthest_popped, d);
       const bool complete =
-          (q.by_count && ws->popped_order.size() + 1 >= q.target) ||
+          (q.by_count && ws->popped_order.size() + source_rows >= q.target) ||
           (q.kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v) && --missing == 0);
       if (complete) run.limit = farthest_popped;
     }
@@ -233,8 +283,8 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
     if (q.kind == Patch::Kind::vertex_set && !ws->wanted.is_marked(v)) continue;
     ws->entries.push_back({v, ws->distance[v], ws->angle[v] - ring.reference_angle});
   }
-  if (q.by_count && ws->entries.size() + 1 > q.target) {
-    const std::size_t keep = q.target - 1;
+  if (q.by_count && ws->entries.size() + source_rows > q.target) {
+    const std::size_t keep = q.target - source_rows;
     std::nth_element(ws->entries.begin(), ws->entries.begin() + keep, ws->entries.end(),
                      [](const internal::Polar_entry& a, const internal::Polar_entry& b) {
                        return a.distance < b.distance ||
@@ -242,8 +292,9 @@ Geodesic_polar_coordinates<TM, VPM>::compute_by_index(std::size_t source_index, 
                      });
     ws->entries.resize(keep);
   }
-  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
-                                      q.frame, query, ws->map_position);
+  return internal::assemble_local_map(m_indexed.arrays, s >= 0 ? s : q.source, ws->entries,
+                                      m_indexed.descriptors, q.frame, query, ws->map_position,
+                                      s >= 0);
 }
 
 }  // namespace expmap

@@ -11,6 +11,7 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -28,13 +29,30 @@ struct Indexed_mesh {
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::type;
   using Vertex_index_map =
       decltype(CGAL::get_initialized_vertex_index_map(std::declval<const TriangleMesh&>()));
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Face_index_map =
+      decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>()));
 
   /// \throws Invalid_input as `make_mesh_arrays()`.
   Indexed_mesh(const TriangleMesh& tm, Vertex_point_map vpm)
-      : vertex_index(CGAL::get_initialized_vertex_index_map(tm)) {
+      : vertex_index(CGAL::get_initialized_vertex_index_map(tm)),
+        face_index(CGAL::get_initialized_face_index_map(tm)) {
     descriptors.resize(num_vertices(tm));
     for (auto v : vertices(tm)) descriptors[get(vertex_index, v)] = v;
     arrays = make_mesh_arrays(tm, vpm, vertex_index);
+    // The arrays start every face at its smallest vertex; a Surface_point's
+    // coordinates follow the user's halfedge, so its corners are kept.
+    face_of_index.resize(num_faces(tm), -1);
+    face_corners.resize(num_faces(tm));
+    int f_position = 0;
+    for (auto f : faces(tm)) {
+      const auto h = halfedge(f, tm);
+      const std::size_t fi = static_cast<std::size_t>(get(face_index, f));
+      face_of_index[fi] = f_position++;
+      face_corners[fi] = {{static_cast<std::size_t>(get(vertex_index, source(h, tm))),
+                           static_cast<std::size_t>(get(vertex_index, target(h, tm))),
+                           static_cast<std::size_t>(get(vertex_index, target(next(h, tm), tm)))}};
+    }
   }
 
   std::size_t index_of(vertex_descriptor v) const {
@@ -43,7 +61,12 @@ struct Indexed_mesh {
   std::size_t number_of_vertices() const { return descriptors.size(); }
 
   Vertex_index_map vertex_index;
+  Face_index_map face_index;
   std::vector<vertex_descriptor> descriptors;
+  /// By face index: the position of the face in `arrays.face`, and its
+  /// corners (user's vertex indices) in the order of `Surface_point`.
+  std::vector<int> face_of_index;
+  std::vector<std::array<std::size_t, 3>> face_corners;
   Mesh_arrays arrays;
 };
 

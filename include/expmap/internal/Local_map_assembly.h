@@ -84,14 +84,16 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
 /// Entries for the source itself are dropped. `entries` is sorted in place;
 /// their vertices and `source` are indices of the user's mesh, which `mesh`
 /// stores (maybe renumbered).
-/// `position` is scratch for `fold_free_disk()`.
+/// `position` is scratch for `fold_free_disk()`. Without `source_row` (a
+/// point source that is no vertex) the map has no row at r = 0, keeps
+/// entries for `source`, and `source` only names the map's `source`.
 template <class VertexDescriptor>
 Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
                                                std::vector<Polar_entry>& entries,
                                                const std::vector<VertexDescriptor>& descriptors,
                                                const Tangent_frame& frame,
                                                const Query_options& query,
-                                               Vertex_marks& position) {
+                                               Vertex_marks& position, bool source_row = true) {
   auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
@@ -115,9 +117,9 @@ Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int sour
     map.distance.push_back(r);
     map.angle.push_back(theta);
   };
-  add(source, 0.0, 0.0);
+  if (source_row) add(source, 0.0, 0.0);
   for (const Polar_entry& e : entries)
-    if (e.vertex != source) add(e.vertex, e.distance, wrap_angle(e.angle));
+    if (e.vertex != source || !source_row) add(e.vertex, e.distance, wrap_angle(e.angle));
   if (!query.trim_folds && !query.find_fold_free_radius) return map;
   const Fold_free_disk disk = fold_free_disk(mesh, map, position);
   if (query.trim_folds)

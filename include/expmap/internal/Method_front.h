@@ -6,7 +6,9 @@
 #include <expmap/Batch.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
+#include <expmap/Surface_point.h>
 #include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Point_source.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/boost/graph/properties.h>
@@ -28,13 +30,19 @@ namespace internal {
 ///
 /// which must be thread safe; everything here is written in terms of it.
 /// `QueryOptions` is the method's per-query settings: `Query_options`, or a
-/// type that extends it and converts from it.
+/// type that extends it and converts from it. Methods that map from points
+/// of faces also provide
+///
+///     Result compute_at_point(const Point_source&, const Patch&, const QueryOptions&) const;
+///
+/// for a point that is no vertex (a vertex goes to `compute_by_index()`).
 template <class Derived, class TriangleMesh, class VertexPointMap,
           class QueryOptions = Query_options>
 class Method_front {
  public:
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Vertex_point_map = typename Indexed_mesh<TriangleMesh, VertexPointMap>::Vertex_point_map;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
   using Result = Local_map<vertex_descriptor>;
   /// The settings of one query.
   using Query = QueryOptions;
@@ -55,6 +63,35 @@ class Method_front {
   Result compute(vertex_descriptor source, const Patch& patch,
                  const Query& query = {}) const {
     return derived().compute_by_index(m_indexed.index_of(source), patch, query);
+  }
+
+  /// Polar coordinates around a point of a face for the vertices of
+  /// `patch`. A point at a corner (one barycentric coordinate 1) gives that
+  /// vertex's map, exactly. Otherwise the map has no row at r = 0 (no
+  /// vertex is at the point), `source` is the face's corner of largest
+  /// coordinate, a count or fraction patch counts only vertices, and the
+  /// angles are measured in the frame at the point (doc/surface_points.md).
+  /// \throws Invalid_input for a face that is not the mesh's, coordinates
+  ///         that are not finite, negative or of sum 0, and as `compute()`.
+  Result compute(const Surface_point<face_descriptor>& source, const Patch& patch,
+                 const Query& query = {}) const {
+    const internal::Point_source p = point_source(source);
+    if (p.vertex >= 0)
+      return derived().compute_by_index(m_indexed.arrays.to_original(p.vertex), patch, query);
+    return derived().compute_at_point(p, patch, query);
+  }
+
+  /// One map per surface point, as `compute(const Surface_point&, ...)`,
+  /// on `batch.threads` threads; a failed query is that point's error
+  /// (named by its position in `sources`).
+  Batch_result<vertex_descriptor> compute_many(
+      const std::vector<Surface_point<face_descriptor>>& sources, const Patch& patch,
+      const Batch_options& batch = {}, const Query& query = {}) const {
+    std::vector<std::size_t> positions(sources.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = i;
+    return run_batch<vertex_descriptor>(positions, batch, [&](std::size_t i) {
+      return compute(sources[i], patch, query);
+    });
   }
 
   /// One map per source, computed on `batch.threads` threads (each query as
@@ -91,6 +128,12 @@ class Method_front {
 
  protected:
   Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
+
+  internal::Point_source point_source(const Surface_point<face_descriptor>& p) const {
+    return resolve_point_source(m_indexed.arrays, m_indexed.face_of_index, m_indexed.face_corners,
+                                static_cast<std::size_t>(get(m_indexed.face_index, p.face)),
+                                p.barycentric);
+  }
 
  private:
   const Derived& derived() const { return static_cast<const Derived&>(*this); }

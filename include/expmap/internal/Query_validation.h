@@ -6,6 +6,7 @@
 #include <expmap/Errors.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Point_source.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Vector3.h>
 
@@ -36,9 +37,10 @@ inline int checked_source(const Mesh_arrays& m, std::size_t source) {
 }
 
 /// The distinct vertices of a vertex-set patch, the source `s` (as stored)
-/// excluded.
+/// excluded unless `keep_source` (a point source near `s` maps it too).
 /// \throws Invalid_input if one is out of range or not connected to `s`.
-inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& patch, int s) {
+inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& patch, int s,
+                                           bool keep_source = false) {
   const std::size_t n = m.number_of_vertices();
   std::vector<int> wanted;
   for (std::size_t original : patch.vertices()) {
@@ -49,7 +51,7 @@ inline std::vector<int> checked_vertex_set(const Mesh_arrays& m, const Patch& pa
     if (m.component[v] != m.component[s])
       throw Invalid_input("patch vertex " + std::to_string(original) +
                           " is not connected to source vertex " + std::to_string(m.to_original(s)));
-    if (v != s) wanted.push_back(v);
+    if (v != s || keep_source) wanted.push_back(v);
   }
   std::sort(wanted.begin(), wanted.end());
   wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
@@ -85,6 +87,22 @@ inline Checked_query checked_query(const Mesh_arrays& m, std::size_t source, con
   q.by_count = q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction;
   q.target = patch_target_count(m, patch, s);
   if (q.kind == Patch::Kind::vertex_set) q.wanted = checked_vertex_set(m, patch, s);
+  return q;
+}
+
+/// The checks of `checked_query()` for a point source that is no vertex:
+/// `source` is then the point's nearest corner (the patch must lie in its
+/// component), `frame` the frame at the point, `target` counts patch
+/// vertices only (the point is no vertex) and `wanted` may hold any corner.
+inline Checked_query checked_point_query(const Mesh_arrays& m, const Point_source& p,
+                                         const Patch& patch, const Query_options& query) {
+  const int s = p.nearest_corner();
+  std::optional<Vector3> reference;
+  if (query.reference_direction) reference = *query.reference_direction;
+  Checked_query q{s, point_tangent_frame(m, p, reference), patch.kind(), false, 0, {}};
+  q.by_count = q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction;
+  q.target = patch_target_count(m, patch, s);
+  if (q.kind == Patch::Kind::vertex_set) q.wanted = checked_vertex_set(m, patch, s, true);
   return q;
 }
 
