@@ -109,27 +109,29 @@ class Heat_exponential_map
   ///         larger time factor or a smaller patch).
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query& query = {}) const {
-    const internal::heat::Context c = context(checked(query));
+    const Query& checked_query = checked(query);
     const internal::Mesh_arrays& mesh = m_indexed.arrays;
     const int s = internal::checked_source(mesh, source);
-    std::optional<internal::Vector3> reference;
-    if (query.reference_direction) reference = *query.reference_direction;
-    const internal::Tangent_frame frame = internal::tangent_frame(mesh, s, reference);
-    const std::size_t target = internal::patch_target_count(mesh, patch, s);
-    const std::vector<int> wanted = patch.kind() == Patch::Kind::vertex_set
-                                        ? internal::checked_vertex_set(mesh, patch, s)
-                                        : std::vector<int>{};
-    auto ws = m_workspaces.acquire([this] { return make_workspace(); });
-    ws->fit_star_solves(m_factors, c.estimator);
-    Solve_statistics statistics;
-    std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
-        c, s, frame, patch, target, wanted, *ws, statistics);
-    Result result =
-        internal::assemble_local_map(mesh, static_cast<int>(mesh.to_original(s)), entries,
-                                     m_indexed.descriptors, frame, query,
-                                     ws->map_position);
-    result.statistics = statistics;
-    return result;
+    const internal::heat::Source vertex = internal::heat::vertex_source(mesh, s);
+    const std::optional<internal::Vector3> reference = reference_of(query);
+    return run(context(checked_query, vertex), internal::tangent_frame(mesh, s, reference),
+               reference, patch, internal::patch_target_count(mesh, patch, s),
+               patch.kind() == Patch::Kind::vertex_set ? internal::checked_vertex_set(mesh, patch, s)
+                                                       : std::vector<int>{});
+  }
+
+  /// Polar coordinates around a point of a face that is no vertex (see
+  /// `compute(const Surface_point&, ...)`): its heat is its corners'
+  /// combined, the gradient stencil and the geometric coordinates next to
+  /// it are its corners' (doc/surface_points.md).
+  Result compute_at_point(const internal::Point_source& point, const Patch& patch,
+                          const Query& query = {}) const {
+    const Query& checked_query = checked(query);
+    const internal::Checked_query q =
+        internal::checked_point_query(m_indexed.arrays, point, patch, query);
+    const internal::heat::Source source = internal::heat::point_source(point);
+    return run(context(checked_query, source), q.frame, reference_of(query), patch, q.target,
+               q.wanted);
   }
 
   /// Diffusion time t = time_factor * h^2.
@@ -144,8 +146,10 @@ class Heat_exponential_map
   /// \throws Invalid_input if the index is out of range, the source is
   ///         isolated or a setting of `query` is out of range.
   Near_source_blend near_source_blend_at(std::size_t source, const Query& query = {}) const {
-    const internal::heat::Context c = context(checked(query));
+    const Query& checked_query = checked(query);
     const int s = internal::checked_source(m_indexed.arrays, source);
+    const internal::heat::Source vertex = internal::heat::vertex_source(m_indexed.arrays, s);
+    const internal::heat::Context c = context(checked_query, vertex);
     const internal::Near_source_zone zone =
         internal::heat::near_source_zone(c, s, internal::vertex_normal(m_indexed.arrays, s));
     const double h = m_indexed.arrays.mean_edge_length;
@@ -196,8 +200,29 @@ class Heat_exponential_map
   static constexpr double blend_normal_turn = internal::heat::blend_normal_turn;
 
  private:
-  internal::heat::Context context(const Query& query) const {
-    return {m_indexed.arrays, m_factors, m_options, query};
+  internal::heat::Context context(const Query& query, const internal::heat::Source& source) const {
+    return {m_indexed.arrays, m_factors, m_options, query, source};
+  }
+  static std::optional<internal::Vector3> reference_of(const Query& query) {
+    std::optional<internal::Vector3> reference;
+    if (query.reference_direction) reference = *query.reference_direction;
+    return reference;
+  }
+  // The query from c.source, once its frame and patch are known.
+  Result run(const internal::heat::Context& c, const internal::Tangent_frame& frame,
+             const std::optional<internal::Vector3>& reference, const Patch& patch,
+             std::size_t target, const std::vector<int>& wanted) const {
+    const internal::Mesh_arrays& mesh = m_indexed.arrays;
+    auto ws = m_workspaces.acquire([this] { return make_workspace(); });
+    ws->fit_star_solves(m_factors, c.estimator);
+    Solve_statistics statistics;
+    std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
+        c, frame, reference, patch, target, wanted, *ws, statistics);
+    Result result = internal::assemble_local_map(
+        mesh, static_cast<int>(mesh.to_original(c.source.lead)), entries, m_indexed.descriptors,
+        frame, c.query, ws->map_position, c.source.is_vertex());
+    result.statistics = statistics;
+    return result;
   }
   std::unique_ptr<internal::heat::Workspace> make_workspace() const {
     return std::make_unique<internal::heat::Workspace>(m_factors, number_of_vertices());

@@ -2,6 +2,7 @@
 // vertex's map, a point on an edge the same map from both faces, the plane
 // exactly, the sphere about as well as from a vertex.
 #include <expmap/Geodesic_polar_coordinates.h>
+#include <expmap/Heat_exponential_map.h>
 #include <expmap/Locate_surface_point.h>
 #include <expmap/Surface_point.h>
 
@@ -20,6 +21,8 @@ using Point_source = expmap::Surface_point<Face>;
 
 template <class Mesh>
 using Dgpc = expmap::Geodesic_polar_coordinates<Mesh>;
+template <class Mesh>
+using Heat = expmap::Heat_exponential_map<Mesh>;
 
 std::array<double, 3> position(const Surface_mesh& mesh, const Point_source& p) {
   const auto h = mesh.halfedge(p.face);
@@ -100,6 +103,114 @@ void check_edge_point_from_both_faces(double tolerance) {
   }
 }
 
+// The largest move of a patch vertex's (u, v) between two maps, over the
+// vertices both hold within `radius`.
+template <class Map>
+double largest_uv_move(const Map& a, const Map& b, double radius) {
+  std::map<std::size_t, std::array<double, 2>> uv;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (a.distance[i] <= radius) uv[a.indices[i]] = a.uv(i);
+  double largest = 0;
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    const auto it = uv.find(b.indices[i]);
+    if (it == uv.end() || b.distance[i] > radius) continue;
+    const auto q = b.uv(i);
+    largest = std::max(largest, std::hypot(q[0] - it->second[0], q[1] - it->second[1]));
+  }
+  return largest;
+}
+
+// A point moved in steps of `step` (a fraction of the face's coordinates)
+// from inside a face, across its edge into the next face and up to a corner
+// moves every (u, v) by a bounded multiple of the distance it moved: no
+// jump where the nearest corner changes, at the edge or at the vertex.
+template <template <class> class Method>
+void check_continuous_motion(double bound) {
+  const auto& soup = icosphere(4);
+  const auto mesh = to_mesh<Surface_mesh>(soup);
+  const Method<Surface_mesh> method(mesh);
+  const auto patch = expmap::Patch::geodesic_radius(0.4);
+  for (std::size_t f : random_sources(mesh.number_of_faces(), 3, 29)) {
+    const Face face(static_cast<Surface_mesh::size_type>(f));
+    const auto h = mesh.halfedge(face);
+    const Face other = mesh.face(mesh.opposite(h));
+    const auto g = mesh.halfedge(other);
+    // The edge (a, b) = (source(h), target(h)) is shared; c and d are the
+    // apexes. A path from near c through the edge's middle to d, then to a.
+    const auto a = mesh.source(h), b = mesh.target(h);
+    auto in_other = [&](double wa, double wb, double wd) {
+      std::map<Surface_mesh::Vertex_index, double> w{{a, wa}, {b, wb}};
+      Point_source q{other, {{0, 0, 0}}};
+      const Surface_mesh::Vertex_index corner[3] = {mesh.source(g), mesh.target(g),
+                                                    mesh.target(mesh.next(g))};
+      for (int k = 0; k < 3; ++k) q.barycentric[k] = w.count(corner[k]) ? w[corner[k]] : wd;
+      return q;
+    };
+    std::vector<Point_source> path;
+    const int steps = 20;
+    for (int i = 0; i <= steps; ++i) {  // from the face's middle to the edge's
+      const double t = static_cast<double>(i) / steps;
+      const double wc = (1 - t) / 3;
+      path.push_back({face, {{(1 - wc) / 2, (1 - wc) / 2, wc}}});
+    }
+    for (int i = 1; i <= steps; ++i) {  // on into the other face
+      const double wd = static_cast<double>(i) / steps / 3;
+      path.push_back(in_other((1 - wd) / 2, (1 - wd) / 2, wd));
+    }
+    for (int i = 1; i <= steps; ++i) {  // then to corner a (a vertex at the end)
+      const double t = static_cast<double>(i) / steps;
+      const double wa = 1.0 / 3 + t * 2.0 / 3;
+      path.push_back(in_other(wa, (1 - wa) / 2, (1 - wa) / 2));
+    }
+    auto previous = method.compute(path[0], patch);
+    auto x0 = position(mesh, path[0]);
+    double worst = 0;
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      const auto map = method.compute(path[i], patch);
+      const auto x = position(mesh, path[i]);
+      const double moved = std::hypot(std::hypot(x[0] - x0[0], x[1] - x0[1]), x[2] - x0[2]);
+      worst = std::max(worst, largest_uv_move(previous, map, 0.3) / moved);
+      previous = map;
+      x0 = x;
+    }
+    BOOST_TEST_MESSAGE("face " << f << ": largest (u, v) move per distance moved " << worst);
+    BOOST_TEST(worst < bound);
+  }
+}
+
+// A point inside a face against the exact map of the unit sphere from that
+// point; the face's corners as sources for comparison.
+template <template <class> class Method>
+void check_sphere_point_as_accurate_as_a_vertex(const char* name, int subdivisions) {
+  const auto& soup = icosphere(subdivisions);
+  const auto mesh = to_mesh<Surface_mesh>(soup);
+  const Method<Surface_mesh> method(mesh);
+  const auto patch = expmap::Patch::geodesic_radius(0.5);
+  std::vector<Point_source> points;
+  for (std::size_t f : random_sources(mesh.number_of_faces(), 5, 2018))
+    points.push_back({Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.3, 0.5}}});
+  expmap::Batch_options two_threads;
+  two_threads.threads = 2;
+  const auto batch = method.compute_many(points, patch, two_threads);
+  BOOST_TEST(batch.failures() == 0u);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Sphere_errors e = point_sphere_errors(batch.maps[i], position(mesh, points[i]), soup);
+    Sphere_errors corners;
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(points[i].face), mesh)) {
+      const Sphere_errors c = sphere_errors(method.compute(v, patch), soup);
+      corners.distance += c.distance / 3;
+      corners.angle += c.angle_rotation_removed / 3;
+    }
+    BOOST_TEST_MESSAGE(name << ", point in face " << points[i].face << ": mean |r error| "
+                            << e.distance << ", mean |theta error| " << e.angle
+                            << "; its corners as sources: " << corners.distance << ", "
+                            << corners.angle);
+    BOOST_TEST(e.vertices > 500u);
+    BOOST_TEST(e.distance <= 1.5 * corners.distance);
+    BOOST_TEST(e.angle <= 1.5 * corners.angle);
+  }
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(surface_points)
@@ -145,37 +256,21 @@ BOOST_AUTO_TEST_CASE(dgpc_exact_on_a_planar_grid) {
   }
 }
 
-// A point inside a face against the exact map of the unit sphere from that
-// point, and the face's corners as sources for comparison.
 BOOST_AUTO_TEST_CASE(dgpc_sphere_point_as_accurate_as_a_vertex) {
-  const auto& soup = icosphere(5);
-  const auto mesh = to_mesh<Surface_mesh>(soup);
-  const Dgpc<Surface_mesh> dgpc(mesh);
-  const auto patch = expmap::Patch::geodesic_radius(0.5);
-  std::vector<Point_source> points;
-  for (std::size_t f : random_sources(mesh.number_of_faces(), 5, 2018))
-    points.push_back({Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.3, 0.5}}});
-  expmap::Batch_options two_threads;
-  two_threads.threads = 2;
-  const auto batch = dgpc.compute_many(points, patch, two_threads);
-  BOOST_TEST(batch.failures() == 0u);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Sphere_errors e = point_sphere_errors(batch.maps[i], position(mesh, points[i]), soup);
-    Sphere_errors corners;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(points[i].face), mesh)) {
-      const Sphere_errors c = sphere_errors(dgpc.compute(v, patch), soup);
-      corners.distance += c.distance / 3;
-      corners.angle += c.angle_rotation_removed / 3;
-    }
-    BOOST_TEST_MESSAGE("DGPC, point in face " << points[i].face << ": mean |r error| " << e.distance
-                                              << ", mean |theta error| " << e.angle
-                                              << "; its corners as sources: " << corners.distance
-                                              << ", " << corners.angle);
-    BOOST_TEST(e.vertices > 500u);
-    BOOST_TEST(e.distance <= 1.5 * corners.distance);
-    BOOST_TEST(e.angle <= 1.5 * corners.angle);
-  }
+  check_sphere_point_as_accurate_as_a_vertex<Dgpc>("DGPC", 5);
 }
+
+BOOST_AUTO_TEST_CASE(dgpc_continuous_motion) { check_continuous_motion<Dgpc>(3.0); }
+
+BOOST_AUTO_TEST_CASE(heat_corner_is_the_vertex) { check_corner_is_the_vertex<Heat>(); }
+
+BOOST_AUTO_TEST_CASE(heat_edge_point_from_both_faces) { check_edge_point_from_both_faces<Heat>(1e-9); }
+
+BOOST_AUTO_TEST_CASE(heat_sphere_point_as_accurate_as_a_vertex) {
+  check_sphere_point_as_accurate_as_a_vertex<Heat>("heat", 5);
+}
+
+BOOST_AUTO_TEST_CASE(heat_continuous_motion) { check_continuous_motion<Heat>(3.0); }
 
 BOOST_AUTO_TEST_CASE(bad_points) {
   const auto mesh = to_mesh<Surface_mesh>(icosphere(2));

@@ -75,6 +75,16 @@ struct Divergence_stencil {
   return {{grad[0] * inverse_length, grad[1] * inverse_length}};
 }
 
+/// X = grad u / |grad u| in the face's layout ({0, 0} where u is constant).
+inline std::array<double, 2> normalized_gradient(const Divergence_stencil& stencil,
+                                                 const std::array<double, 3>& u) {
+  std::array<double, 2> unit = stencil.unnormalized_gradient(u);
+  const double square = unit[0] * unit[0] + unit[1] * unit[1];
+  if (!std::isnormal(square)) return rescaled_unit_gradient(stencil, u);
+  const double inverse_length = 1.0 / std::sqrt(square);
+  return {{unit[0] * inverse_length, unit[1] * inverse_length}};
+}
+
 /// The integrated divergence of X = grad u / |grad u| at the three corners
 /// of the face of `stencil`. The three contributions sum to zero (up to
 /// round-off), so a right-hand side assembled from whole faces satisfies the

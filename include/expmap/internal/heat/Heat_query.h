@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <future>
+#include <optional>
 #include <system_error>
 #include <vector>
 
@@ -76,17 +77,34 @@ inline Solve_statistics find_region(const Context& c, int s, const Patch& patch,
   return stats;
 }
 
-/// The polar coordinates of `patch` around source s (renumbered) in the
-/// tangent frame `frame`: `target` and `wanted` as `patch_target_count` and
-/// `checked_vertex_set` give them. Adds the solves' statistics to `stats`.
-inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
+/// The polar coordinates of `patch` around the query's source (c.source)
+/// in the tangent frame `frame`: `target` and `wanted` as
+/// `patch_target_count` and `checked_vertex_set` give them. A point source
+/// takes `reference` (the query's reference direction) for its corners'
+/// frames. Adds the solves' statistics to `stats`.
+inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c,
                                                        const Tangent_frame& frame,
+                                                       const std::optional<Vector3>& reference,
                                                        const Patch& patch, std::size_t target,
                                                        const std::vector<int>& wanted,
                                                        Workspace& ws, Solve_statistics& stats) {
+  const int s = c.source.lead;
   // The stencil the angles are read on, around the source in the caller's
-  // tangent frame.
-  const Star_gradient star = source_star_gradient(c, s, frame);
+  // tangent frame; a point's from its corners'.
+  std::vector<Point_corner> corners;
+  Star_gradient star;
+  if (c.source.is_vertex()) {
+    star = source_star_gradient(c, s, frame);
+  } else {
+    corners = point_corners(c.mesh, c.source, frame, reference,
+                            [&](int v, const Vector3& normal) {
+                              return near_source_zone(c, v, normal);
+                            });
+    star = point_star_gradient(c.mesh, c.source, frame, corners,
+                               [&](int v, const Tangent_frame& corner_frame) {
+                                 return source_star_gradient(c, v, corner_frame);
+                               });
+  }
   const auto component = static_cast<std::size_t>(c.mesh.component_size[c.mesh.component[s]]);
   for (double growth = c.query.region_growth;; growth *= 2) {
     const bool retry = growth > c.query.region_growth;
@@ -97,7 +115,7 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
         find_region(c, s, patch, target, wanted, component, growth, retry, whole_component, ws);
 
     // Step 2 near a boundary: the heat the distance is read from.
-    stats += average_boundary_heat(c, s, target, ws);
+    stats += average_boundary_heat(c, target, ws);
 
     // Steps 3 and 4; with a second thread, step 6 beside them, on the whole region
     // (the patch is not known before the distance).
@@ -123,7 +141,8 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
 
     // Step 5: the patch, clear of the region's edge, or a retry on a
     // region twice as large.
-    const std::vector<std::size_t> order = select_patch(patch, target, wanted, ws);
+    const std::vector<std::size_t> order =
+        select_patch(patch, target, wanted, c.source.is_vertex(), ws);
     if (!whole_component && !patch_is_complete(c, patch, target, wanted, order, ws))
       continue;
     ws.patch.clear();
@@ -139,7 +158,7 @@ inline std::vector<Polar_entry> heat_polar_coordinates(const Context& c, int s,
     if (ws.meets_boundary) stats += solve_boundary_star_heat(c, star, ws);
 
     // Step 7.
-    return polar_coordinates(c, s, frame, star, order, ws);
+    return polar_coordinates(c, frame, star, corners, order, ws);
   }
 }
 

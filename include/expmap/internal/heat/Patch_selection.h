@@ -24,12 +24,14 @@ namespace internal {
 namespace heat {
 
 // Region positions of the patch vertices, nearest first (ties by vertex).
+// `source_row`: the source is a vertex, the region's first, and belongs to
+// every patch (`wanted` then leaves it out).
 inline std::vector<std::size_t> select_patch(const Patch& patch, std::size_t target,
-                                             const std::vector<int>& wanted,
+                                             const std::vector<int>& wanted, bool source_row,
                                              const Workspace& ws) {
   std::vector<std::size_t> order;
   if (patch.kind() == Patch::Kind::vertex_set) {
-    order.push_back(0);  // the source
+    if (source_row) order.push_back(0);
     for (int v : wanted)  // distinct, without the source
       if (ws.in_region.is_marked(v))
         order.push_back(static_cast<std::size_t>(ws.in_region.value(v)));
@@ -110,7 +112,9 @@ inline bool patch_is_complete(const Context& c, const Patch& patch, std::size_t 
   const double reach = patch.kind() == Patch::Kind::geodesic_radius
                            ? patch.radius()
                            : (order.empty() ? 0.0 : ws.potential[order.back()]);
-  const bool all_found = patch.kind() == Patch::Kind::vertex_set ? order.size() == wanted.size() + 1
+  const std::size_t source_row = c.source.is_vertex() ? 1 : 0;
+  const bool all_found = patch.kind() == Patch::Kind::vertex_set
+                             ? order.size() == wanted.size() + source_row
                          : patch.kind() == Patch::Kind::geodesic_radius ? true
                                                                          : order.size() == target;
   // A vertex farther than reach * margin (>= reach) passes both tests, so

@@ -19,6 +19,24 @@ namespace expmap {
 namespace internal {
 namespace heat {
 
+// The potential at the source: at a vertex its own; at a point, the
+// corners' potentials less their distances from the point, weighted like
+// the point's heat (so it is continuous as the point moves and is the
+// vertex's own at a vertex). Corners outside the region are left out.
+inline double potential_at_source(const Context& c, const Workspace& ws) {
+  const Source& source = c.source;
+  if (source.is_vertex()) return ws.potential[0];
+  double sum = 0, weight = 0;
+  for (int k = 0; k < source.count; ++k) {
+    const int v = source.corner[k];
+    if (!ws.in_region.is_marked(v)) continue;
+    const double d = norm(c.mesh.point[v] - source.position);
+    sum += source.weight[k] * (ws.potential[static_cast<std::size_t>(ws.in_region.value(v))] - d);
+    weight += source.weight[k];
+  }
+  return sum / weight;  // the lead is the region's first vertex
+}
+
 // Fills ws.potential with the distance of each region vertex from the
 // source s (the first region vertex).
 // \throws Computation_error if the distance is clearly smallest elsewhere.
@@ -42,7 +60,7 @@ inline Solve_statistics integrate_distance(const Context& c, int s, Workspace& w
   // Slightly negative values next to the source are discretization error
   // and are clamped to 0; a clearly negative one means the heat was not
   // positive (negative cotan weights) and the whole field is unreliable.
-  const double at_source = ws.potential[0];
+  const double at_source = potential_at_source(c, ws);
   std::size_t lowest = 0;
   for (std::size_t i = 0; i < kept; ++i)
     if (ws.potential[i] < ws.potential[lowest]) lowest = i;

@@ -14,6 +14,7 @@
 #include <expmap/internal/Source_one_ring.h>
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
+#include <expmap/internal/heat/Point_corners.h>
 #include <expmap/internal/heat/Query_workspace.h>
 #include <expmap/internal/heat/Star_solve.h>
 
@@ -86,19 +87,18 @@ inline double near_source_angle(const Context& c, int s, int v, const Tangent_fr
   return ring.native_angle(projected) - ring.reference_angle;
 }
 
-// Polar angle of v at heat distance r from its heat direction, blended with
-// the geometric direction next to the source.
-inline double polar_angle(const Context& c, int s, int v, double r,
-                          const std::array<double, 2>& direction, const Tangent_frame& frame,
-                          const Source_one_ring& ring, const Near_source_zone& zone) {
-  const double w = zone.heat_weight(r);
-  if (w == 0.0) return near_source_angle(c, s, v, frame, ring);
+// Polar angle at heat weight w (the zone's at the vertex's distance) from
+// the heat direction, blended with the `geometric()` angle next to the
+// source.
+template <class Geometric>
+double polar_angle(double w, const std::array<double, 2>& direction, const Geometric& geometric) {
+  if (w == 0.0) return geometric();
   const double heat_angle = std::atan2(direction[1], direction[0]);
   if (w == 1.0) return heat_angle;
-  const double geometric = near_source_angle(c, s, v, frame, ring);
+  const double g = geometric();
   // Blend unit vectors, not angles, so that the wrap at +-pi does not matter.
-  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(geometric),
-                    w * std::cos(heat_angle) + (1 - w) * std::cos(geometric));
+  return std::atan2(w * std::sin(heat_angle) + (1 - w) * std::sin(g),
+                    w * std::cos(heat_angle) + (1 - w) * std::cos(g));
 }
 
 // The gradient at s of the heat from patch vertex v, from its star solve
@@ -121,18 +121,37 @@ inline std::array<double, 2> heat_direction(const Context& c, double at_source,
   return star.apply(values.data());
 }
 
+// The heat from a patch vertex at the source, from its row `h` of a star
+// solve of one column per star vertex: at a point, its corners' weighted.
+inline double heat_at_source(const Context& c, const Star_gradient& star, const double* h) {
+  if (c.source.is_vertex()) return h[0];
+  double sum = 0;
+  for (int k = 0; k < c.source.count; ++k) {
+    const auto column = static_cast<std::size_t>(
+        std::find(star.vertices.begin(), star.vertices.end(), c.source.corner[k]) -
+        star.vertices.begin());
+    sum += c.source.weight[k] * h[column];
+  }
+  return sum;
+}
+
 // The polar coordinates of the patch (region positions `order`, the source
-// first) in original vertex indices, the source left out.
-inline std::vector<Polar_entry> polar_coordinates(const Context& c, int s,
-                                                  const Tangent_frame& frame,
+// first) in original vertex indices, the source left out. `corners`: a
+// point source's (empty for a vertex).
+inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangent_frame& frame,
                                                   const Star_gradient& star,
+                                                  const std::vector<Point_corner>& corners,
                                                   const std::vector<std::size_t>& order,
                                                   const Workspace& ws) {
   const Angle_estimator estimator = c.estimator;
   const bool linear = is_linear_in_heat(estimator);
   const std::size_t width = star_columns(c, star);
   const std::size_t boundary_width = boundary_star_columns(c, star);
-  const Near_source_zone zone = near_source_zone(c, s, frame.normal);
+  const bool at_vertex = c.source.is_vertex();
+  // A point source is no vertex of the patch.
+  const int s = at_vertex ? c.source.lead : -1;
+  const Near_source_zone zone =
+      at_vertex ? near_source_zone(c, s, frame.normal) : point_zone(corners);
   std::vector<double> values(star.vertices.size());
   std::vector<double> both(width);  // the Neumann and Dirichlet heat, summed
   // The heat directions of the patch vertices (where the blend wants them),
@@ -147,11 +166,11 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, int s,
     const double* h = ws.star.heat.data() + p * width;
     // The heat from v at the source: its own column for a logarithmic
     // estimator, the source heat of step 2 otherwise.
-    double at_source = linear ? ws.region_heat[i] : h[0];
+    double at_source = linear ? ws.region_heat[i] : heat_at_source(c, star, h);
     if (ws.meets_boundary) {
       const double* dirichlet = ws.boundary_star.heat.data() + p * boundary_width;
       for (std::size_t k = 0; k < width; ++k) both[k] = h[k] + dirichlet[k];
-      at_source = linear ? at_source + dirichlet[2] : both[0];
+      at_source = linear ? at_source + dirichlet[2] : heat_at_source(c, star, both.data());
       h = both.data();
     }
     if (!(std::abs(at_source) > std::numeric_limits<double>::min()))
@@ -172,14 +191,29 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, int s,
 
   std::vector<Polar_entry> entries;
   entries.reserve(order.size());
-  const Source_one_ring ring = source_one_ring(c.mesh, s, frame);
+  if (at_vertex) {
+    const Source_one_ring ring = source_one_ring(c.mesh, s, frame);
+    for (std::size_t p = 0; p < order.size(); ++p) {
+      const std::size_t i = order[p];
+      const int v = ws.region[i];
+      if (v == s) continue;
+      const double r = ws.potential[i];
+      entries.push_back(
+          {static_cast<int>(c.mesh.to_original(v)), blended_distance(c, s, v, r, ring, zone),
+           polar_angle(zone.heat_weight(r), direction[p],
+                       [&] { return near_source_angle(c, s, v, frame, ring); })});
+    }
+    return entries;
+  }
+  const Point_near_source near{c.mesh, c.source, corners};
   for (std::size_t p = 0; p < order.size(); ++p) {
     const std::size_t i = order[p];
     const int v = ws.region[i];
-    if (v == s) continue;
+    const double r = ws.potential[i];
+    const double w = zone.heat_weight(r);
     entries.push_back({static_cast<int>(c.mesh.to_original(v)),
-                       blended_distance(c, s, v, ws.potential[i], ring, zone),
-                       polar_angle(c, s, v, ws.potential[i], direction[p], frame, ring, zone)});
+                       w == 1.0 ? r : w * r + (1 - w) * near.distance(v, r),
+                       polar_angle(w, direction[p], [&] { return near.angle(v); })});
   }
   return entries;
 }

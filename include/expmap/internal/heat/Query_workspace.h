@@ -12,6 +12,7 @@
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/heat/Heat_factors.h>
+#include <expmap/internal/heat/Heat_source.h>
 
 #include <cstddef>
 #include <vector>
@@ -23,11 +24,12 @@ namespace heat {
 /// The read-only inputs of every phase.
 struct Context {
   Context(const Mesh_arrays& mesh, const Heat_factors& factors, const Heat_options& options,
-          const Heat_query_options& query)
+          const Heat_query_options& query, const Source& source)
       : mesh(mesh),
         factors(factors),
         options(options),
         query(query),
+        source(source),
         estimator(angle_estimator_at(query.angle_estimator, options.time_factor)),
         pruning_tolerance(factors.heat_is_m_matrix ? query.pruning_tolerance : 0.0) {}
 
@@ -35,6 +37,7 @@ struct Context {
   const Heat_factors& factors;
   const Heat_options& options;     // the precomputation's
   const Heat_query_options& query;  // this query's
+  const Source& source;            // this query's
   Angle_estimator estimator;       // the query's, as the time factor allows
   double pruning_tolerance;        // the query's, 0 where the heat matrix forbids pruning
 };

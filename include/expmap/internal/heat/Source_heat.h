@@ -68,8 +68,9 @@ inline void choose_source_heat_pruning(const Context& c, int s, std::size_t coun
 // The heat from s on the candidates (ws.heat), pruned below
 // ws.heat_drop_below. Extendable: if the candidates grow, only the back
 // substitution of the new ones' supernodes is added.
-inline Solve_statistics solve_source_heat_below(const Context& c, int s, Workspace& ws) {
-  ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
+inline Solve_statistics solve_source_heat_below(const Context& c, Workspace& ws) {
+  ws.rhs.clear();
+  c.source.add_heat(ws.rhs, 0);
   ws.heat.resize(ws.candidates.size());
   return c.factors.heat.solve_extendable(ws.rhs, 1, ws.candidates.data(), ws.candidates.size(),
                                          ws.heat.data(), ws.heat_solve, ws.heat_drop_below);
@@ -77,7 +78,7 @@ inline Solve_statistics solve_source_heat_below(const Context& c, int s, Workspa
 
 inline Solve_statistics solve_source_heat(const Context& c, int s, Workspace& ws) {
   choose_source_heat_pruning(c, s, ws.candidates.size(), ws);
-  return solve_source_heat_below(c, s, ws);
+  return solve_source_heat_below(c, ws);
 }
 
 // The same heat on the candidates after they grew.
@@ -101,7 +102,8 @@ inline void put_source_first(int s, Workspace& ws) {
 // vertices solved, the source first.
 inline Solve_statistics solve_hottest_source_heat(const Context& c, int s, std::size_t kept,
                                                   Workspace& ws) {
-  ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
+  ws.rhs.clear();
+  c.source.add_heat(ws.rhs, 0);
   const Solve_statistics stats = c.factors.heat.solve_largest(ws.rhs, kept, ws.candidates, ws.heat,
                                                               ws.heat_solve, ws.heat_drop_below);
   put_source_first(s, ws);
@@ -142,7 +144,8 @@ inline Solve_statistics solve_source_heat_at_least(const Context& c, int s, doub
   if (retry) {
     stats = c.factors.heat.extend_at_least(threshold, ws.candidates, ws.heat, ws.heat_solve);
   } else {
-    ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
+    ws.rhs.clear();
+    c.source.add_heat(ws.rhs, 0);
     stats = c.factors.heat.solve_at_least(ws.rhs, threshold, ws.candidates, ws.heat, ws.heat_solve,
                                           ws.heat_drop_below);
     put_source_first(s, ws);
@@ -212,7 +215,7 @@ inline Solve_statistics confirm_pruned_source_heat(const Context& c, int s, bool
     ws.heat_drop_below = attempt == 0 ? tolerance * smallest : 0.0;
     const std::size_t kept = ws.heat_row.size();
     stats += largest_first ? solve_hottest_source_heat(c, s, kept, ws)
-                           : solve_source_heat_below(c, s, ws);
+                           : solve_source_heat_below(c, ws);
     choose_region(kept, ws);
   }
   return stats;
@@ -224,11 +227,20 @@ inline Solve_statistics confirm_pruned_source_heat(const Context& c, int s, bool
 // Neumann heat. Only where the boundary reaches the patch (its `target`
 // hottest vertices; a radius patch: the region): farther off, a hole's zero
 // heat would only bend the distance towards it.
-inline Solve_statistics average_boundary_heat(const Context& c, int s, std::size_t target,
+inline Solve_statistics average_boundary_heat(const Context& c, std::size_t target,
                                               Workspace& ws) {
   ws.distance_heat.clear();
-  if (!c.factors.has_boundary() || c.factors.is_boundary[static_cast<std::size_t>(s)])
-    return {};
+  if (!c.factors.has_boundary()) return {};
+  // A point's corners on the boundary add nothing to the Dirichlet heat
+  // (their rows are identity, their heat zero); the normalized gradient
+  // does not see the factor 1/2 the mean then takes off the Neumann heat
+  // where all of them are: a point comes to the mean continuously.
+  const auto on_boundary = [&](int v) {
+    return c.factors.is_boundary[static_cast<std::size_t>(v)] != 0;
+  };
+  ws.rhs.clear();
+  c.source.add_heat(ws.rhs, 0, on_boundary);
+  if (ws.rhs.empty()) return {};
   double hottest_kept = 0;
   if (target > 0 && target < ws.region.size()) {
     std::size_t larger = 0;
@@ -241,7 +253,6 @@ inline Solve_statistics average_boundary_heat(const Context& c, int s, std::size
     reaches_patch = c.factors.is_boundary[static_cast<std::size_t>(ws.region[i])] &&
                     ws.region_heat[i] >= hottest_kept;
   if (!reaches_patch) return {};
-  ws.rhs.assign(1, Rhs_entry{s, 0, 1.0});
   ws.distance_heat.resize(ws.region.size());
   const Solve_statistics stats =
       c.factors.boundary_heat.solve(ws.rhs, 1, ws.region.data(), ws.region.size(),

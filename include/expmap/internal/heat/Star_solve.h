@@ -71,7 +71,7 @@ inline void star_right_hand_side(const Context& c, const Star_gradient& star, st
       rhs.push_back({star.vertices[k], 0, star.along_e1[k]});
       rhs.push_back({star.vertices[k], 1, star.along_e2[k]});
     }
-    if (width == 3) rhs.push_back({star.vertices[0], 2, 1.0});  // the heat from s
+    if (width == 3) c.source.add_heat(rhs, 2);  // the heat from the source
   } else {
     for (std::size_t k = 0; k < width; ++k)
       rhs.push_back({star.vertices[k], static_cast<int>(k), 1.0});
