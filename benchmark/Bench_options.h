@@ -36,6 +36,11 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --fractions LIST         patch fractions in (0,1] (default:
                            0.01,0.02,0.05,0.1,0.25)
   --sources N              random source vertices per mesh (default 20)
+  --source-points          also time each method from a point of a face next
+                           to each source vertex (weight 0.5 at the vertex,
+                           0.25 at the face's other corners), as
+                           "METHOD@point" taking turns with the rest, and
+                           print the point / vertex time ratios
   --full-sources N         heat-full uses only the first N of them (default:
                            all); its time does not depend on the fraction
   --seed S                 std::mt19937 seed of the sources (default 1)
@@ -73,6 +78,7 @@ struct Bench_options {
   std::vector<std::string> methods{"heat", "heat-full"};
   std::vector<double> fractions{0.01, 0.02, 0.05, 0.1, 0.25};
   std::size_t sources = 20;
+  bool source_points = false;  // also time each method from a point next to each source
   std::size_t full_sources = 0;  // 0: all
   unsigned seed = 1;
   std::size_t repeats = 3;
@@ -118,6 +124,10 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
     if (arg == "--help" || arg == "-h") {
       o.help = true;
       return o;
+    }
+    if (arg == "--source-points") {
+      o.source_points = true;
+      continue;
     }
     if (i + 1 >= argc) throw Usage_error("unknown option or missing value: " + arg);
     const std::string value = argv[++i];

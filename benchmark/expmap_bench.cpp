@@ -413,12 +413,15 @@ class Benchmark {
     for (const std::string& method : m_options.methods) {
       if (method == "heat") {
         turns.push_back(query_method(method, *heat, m_heat_query));
+        if (m_options.source_points)
+          turns.push_back(point_query_method(method, *heat, mesh, m_heat_query));
       } else if (method == "dem") {
         dem = construct_baseline<Dem>(method, mesh);
         turns.push_back(query_method(method, *dem));
       } else if (method == "dgpc") {
         dgpc = construct_baseline<Dgpc>(method, mesh);
         turns.push_back(query_method(method, *dgpc));
+        if (m_options.source_points) turns.push_back(point_query_method(method, *dgpc, mesh));
       } else if (method == "exact") {
         const std::size_t largest = expmap::Patch::fraction(*std::max_element(
             m_options.fractions.begin(), m_options.fractions.end())).target_count(n);
@@ -461,8 +464,14 @@ class Benchmark {
       records.insert(records.end(), r.begin(), r.end());
     }
 
-    // Rows, in the order of the methods and fractions asked for.
+    // Rows, in the order of the methods and fractions asked for (each
+    // method's point twin after it).
+    std::vector<std::string> timed;
     for (const std::string& method : m_options.methods) {
+      timed.push_back(method);
+      if (m_options.source_points && method != "heat-full") timed.push_back(method + "@point");
+    }
+    for (const std::string& method : timed) {
       for (double f : m_options.fractions) {
         std::vector<const Query_record*> selected;
         double patch_override = nan_value;
@@ -502,6 +511,26 @@ class Benchmark {
                                    const typename Method::Query& query = {}) {
     return {name, [&method, query](std::size_t source, const expmap::Patch& patch) {
               return method.compute_by_index(source, patch, query);
+            }};
+  }
+
+  /// `method` queried from a point of a face next to each source vertex:
+  /// half the weight at the vertex, the rest on the face's other corners.
+  template <class Method>
+  static Query_method point_query_method(const std::string& name, const Method& method,
+                                         const Mesh& mesh,
+                                         const typename Method::Query& query = {}) {
+    return {name + "@point",
+            [&method, &mesh, query](std::size_t source, const expmap::Patch& patch) {
+              const Mesh::Vertex_index v(static_cast<Mesh::size_type>(source));
+              auto h = mesh.halfedge(v);  // v is its target
+              while (mesh.is_border(h)) h = mesh.opposite(mesh.next(h));
+              expmap::Surface_point<Mesh::Face_index> at{mesh.face(h), {}};
+              const auto g = mesh.halfedge(at.face);
+              const Mesh::Vertex_index corner[3] = {mesh.source(g), mesh.target(g),
+                                                    mesh.target(mesh.next(g))};
+              for (int k = 0; k < 3; ++k) at.barycentric[k] = corner[k] == v ? 0.5 : 0.25;
+              return method.compute(at, patch, query);
             }};
   }
 
@@ -638,6 +667,24 @@ class Benchmark {
                      const auto* b = find_row(m, baseline, f);
                      return b && b->median_ms > 0 ? heat.median_ms / b->median_ms : nan_value;
                    });
+    if (m_options.source_points) {
+      for (const std::string& method : m_options.methods) {
+        if (method == "heat-full") continue;
+        header(method + ": query time from a point / from a vertex (medians over the same "
+                        "sources):");
+        for (const auto& m : meshes) {
+          std::cout << pad(m, 18, true);
+          for (double f : fractions) {
+            const auto* a = find_row(m, method + "@point", f);
+            const auto* b = find_row(m, method, f);
+            std::cout << pad(a && b && b->median_ms > 0 ? fixed(a->median_ms / b->median_ms, 2)
+                                                        : "-",
+                             10);
+          }
+          std::cout << "\n";
+        }
+      }
+    }
     if (has("heat"))
       heat_table("heat p90 / median query time:",
                  [](const Summary_row& heat, const std::string&, double) {
