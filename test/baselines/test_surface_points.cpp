@@ -181,8 +181,8 @@ void check_continuous_motion(double bound) {
 // A point inside a face against the exact map of the unit sphere from that
 // point; the face's corners as sources for comparison.
 template <template <class> class Method>
-void check_sphere_point_as_accurate_as_a_vertex(const char* name, int subdivisions) {
-  const auto& soup = icosphere(subdivisions);
+void check_sphere_point_as_accurate_as_a_vertex(const char* name,
+                                                const expmap_analytic::Triangle_soup& soup) {
   const auto mesh = to_mesh<Surface_mesh>(soup);
   const Method<Surface_mesh> method(mesh);
   const auto patch = expmap::Patch::geodesic_radius(0.5);
@@ -209,6 +209,72 @@ void check_sphere_point_as_accurate_as_a_vertex(const char* name, int subdivisio
     BOOST_TEST(e.distance <= 1.5 * corners.distance);
     BOOST_TEST(e.angle <= 1.5 * corners.angle);
   }
+}
+
+// The icosphere with every vertex moved along the sphere by up to a fifth
+// of an edge in a random direction.
+expmap_analytic::Triangle_soup jittered_icosphere(int subdivisions, unsigned seed) {
+  expmap_analytic::Triangle_soup soup = expmap_analytic::make_icosphere(subdivisions, 1.0);
+  const double edge = 1.1 * 2 * M_PI / (5 * std::pow(2.0, subdivisions));
+  std::mt19937 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  for (auto& p : soup.points) {
+    std::array<double, 3> q;
+    for (int d = 0; d < 3; ++d) q[d] = p[d] + 0.2 / std::sqrt(3.0) * edge * normal(rng);
+    const double length = std::hypot(std::hypot(q[0], q[1]), q[2]);
+    for (int d = 0; d < 3; ++d) p[d] = q[d] / length;
+  }
+  return soup;
+}
+
+// Points in faces with an edge on a planar grid's boundary, against the
+// exact planar map: the largest distance error and angle error (weighted by
+// the distance, so a length too) of the patch as small, up to 1.5 times
+// (and 1e-9), as those of the face's corners as sources, and no fold.
+template <template <class> class Method>
+void check_boundary_face_points(const char* name) {
+  const auto soup = planar_grid(24, true);
+  const auto mesh = to_mesh<Surface_mesh>(soup);
+  const Method<Surface_mesh> method(mesh);
+  const auto patch = expmap::Patch::geodesic_radius(0.5);
+  expmap::Query_options query;
+  query.find_fold_free_radius = true;
+  auto errors = [&](const auto& map, const std::array<double, 3>& source) {
+    std::array<double, 2> e{{0, 0}};
+    for (std::size_t i = 0; i < map.size(); ++i) {
+      const auto exact =
+          expmap_analytic::plane_exponential_map(source, soup.points[map.indices[i]], map.axis_u);
+      e[0] = std::max(e[0], std::abs(map.distance[i] - exact.r));
+      e[1] = std::max(e[1], exact.r * angle_difference(map.angle[i], exact.theta_unrotated));
+    }
+    return e;
+  };
+  std::size_t checked = 0;
+  for (auto f : mesh.faces()) {
+    bool on_boundary = false;
+    for (auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+      on_boundary = on_boundary || mesh.is_border(mesh.opposite(h));
+    if (!on_boundary || f.idx() % 7 != 0) continue;
+    const Point_source p{f, {{0.2, 0.3, 0.5}}};
+    const auto map = method.compute(p, patch, query);
+    const auto e = errors(map, position(mesh, p));
+    std::array<double, 2> corners{{0, 0}};
+    for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+      const auto x = mesh.point(v);
+      const auto c = errors(method.compute(v, patch), {{x.x(), x.y(), x.z()}});
+      for (int k = 0; k < 2; ++k) corners[k] = std::max(corners[k], c[k]);
+    }
+    BOOST_TEST_MESSAGE(name << ", point in boundary face " << f << ": largest |r error| " << e[0]
+                            << ", largest r |theta error| " << e[1] << "; its corners': "
+                            << corners[0] << ", " << corners[1]);
+    BOOST_TEST(map.size() > 25u);  // a quarter disk at the grid's corners
+    BOOST_TEST(e[0] <= std::max(1.5 * corners[0], 1e-9));
+    BOOST_TEST(e[1] <= std::max(1.5 * corners[1], 1e-9));
+    // No fold: the fold-free disk is the whole patch.
+    BOOST_TEST(*map.fold_free_radius == *std::max_element(map.distance.begin(), map.distance.end()));
+    ++checked;
+  }
+  BOOST_TEST(checked >= 5u);
 }
 
 }  // namespace
@@ -257,8 +323,11 @@ BOOST_AUTO_TEST_CASE(dgpc_exact_on_a_planar_grid) {
 }
 
 BOOST_AUTO_TEST_CASE(dgpc_sphere_point_as_accurate_as_a_vertex) {
-  check_sphere_point_as_accurate_as_a_vertex<Dgpc>("DGPC", 5);
+  check_sphere_point_as_accurate_as_a_vertex<Dgpc>("DGPC", icosphere(5));
+  check_sphere_point_as_accurate_as_a_vertex<Dgpc>("DGPC, jittered", jittered_icosphere(5, 3));
 }
+
+BOOST_AUTO_TEST_CASE(dgpc_boundary_face_points) { check_boundary_face_points<Dgpc>("DGPC"); }
 
 BOOST_AUTO_TEST_CASE(dgpc_continuous_motion) { check_continuous_motion<Dgpc>(3.0); }
 
@@ -267,8 +336,11 @@ BOOST_AUTO_TEST_CASE(heat_corner_is_the_vertex) { check_corner_is_the_vertex<Hea
 BOOST_AUTO_TEST_CASE(heat_edge_point_from_both_faces) { check_edge_point_from_both_faces<Heat>(1e-9); }
 
 BOOST_AUTO_TEST_CASE(heat_sphere_point_as_accurate_as_a_vertex) {
-  check_sphere_point_as_accurate_as_a_vertex<Heat>("heat", 5);
+  check_sphere_point_as_accurate_as_a_vertex<Heat>("heat", icosphere(5));
+  check_sphere_point_as_accurate_as_a_vertex<Heat>("heat, jittered", jittered_icosphere(5, 3));
 }
+
+BOOST_AUTO_TEST_CASE(heat_boundary_face_points) { check_boundary_face_points<Heat>("heat"); }
 
 BOOST_AUTO_TEST_CASE(heat_continuous_motion) { check_continuous_motion<Heat>(3.0); }
 
