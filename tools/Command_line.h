@@ -153,12 +153,15 @@ inline std::array<double, 3> parse_vector(const std::string& option, const std::
   return v;
 }
 
-/// Barycentric coordinates "A,B,C": not negative, of positive sum.
+/// Barycentric coordinates "A,B,C", not negative and of positive sum,
+/// rescaled to sum 1.
 inline std::array<double, 3> parse_barycentric(const std::string& option, const std::string& text) {
-  const std::array<double, 3> w = parse_vector(option, text);
-  if (w[0] < 0 || w[1] < 0 || w[2] < 0 || !(w[0] + w[1] + w[2] > 0))
+  std::array<double, 3> w = parse_vector(option, text);
+  const double sum = w[0] + w[1] + w[2];
+  if (w[0] < 0 || w[1] < 0 || w[2] < 0 || !(sum > 0) || !std::isfinite(sum))
     throw Usage_error(option + " expects three numbers A,B,C, none negative and not all zero (got '" +
                       text + "')");
+  for (double& x : w) x /= sum;
   return w;
 }
 

@@ -68,6 +68,13 @@ BOOST_AUTO_TEST_CASE(a_point_at_a_vertex_gives_the_vertex_map) {
                      err());
   BOOST_TEST(read_text(dir / "face.csv") == read_text(dir / "vertex.csv"));
   BOOST_TEST(out().find("in face 43, barycentric (1, 0, 0)") != std::string::npos, out());
+  // Coordinates are rescaled to sum 1.
+  BOOST_TEST_REQUIRE(run(grid + " --source-face 43 --barycentric 2,0,0 -o " + file("face.csv")) == 0,
+                     err());
+  BOOST_TEST(read_text(dir / "face.csv") == read_text(dir / "vertex.csv"));
+  BOOST_TEST(out().find("source point (3, 3, 0) in face 43, barycentric (1, 0, 0)") !=
+                 std::string::npos,
+             out());
 }
 
 // On a plane the map from a point inside a face is exact: its distances
