@@ -31,6 +31,12 @@ class Usage_error : public std::runtime_error {
   explicit Usage_error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// A failure of the run itself (files, mesh): exit status 1.
+class Runtime_error : public std::runtime_error {
+ public:
+  explicit Runtime_error(const std::string& message) : std::runtime_error(message) {}
+};
+
 enum class Output_format { csv, obj, svg, npz };
 
 struct Output {
@@ -44,6 +50,13 @@ struct Output {
 struct Compute_arguments {
   std::string mesh;
   std::size_t source = 0;
+  // A point source instead of `source`: a position whose nearest surface
+  // point is mapped from, or a face of the file and the barycentric
+  // coordinates of its corners, in the file's order.
+  std::optional<std::array<double, 3>> source_point;
+  std::optional<std::size_t> source_face;
+  std::optional<std::array<double, 3>> barycentric;
+  std::string point_option;  // the option that gave point sources ("" for vertices), for messages
   std::optional<double> radius, fraction;
   std::optional<std::size_t> vertex_count;
   std::string method = "heat";
@@ -74,6 +87,7 @@ struct Source_selection {
 /// `source` it does not use) from many sources.
 struct Batch_arguments : Compute_arguments {
   Source_selection sources;
+  std::string source_points_file;  // --source-points: one X,Y,Z per line, instead of `sources`
   unsigned threads = 0;  // 0: all cores
 };
 
@@ -137,6 +151,18 @@ inline std::array<double, 3> parse_vector(const std::string& option, const std::
     start = comma + 1;
   }
   return v;
+}
+
+/// Barycentric coordinates "A,B,C", not negative and of positive sum,
+/// rescaled to sum 1.
+inline std::array<double, 3> parse_barycentric(const std::string& option, const std::string& text) {
+  std::array<double, 3> w = parse_vector(option, text);
+  const double sum = w[0] + w[1] + w[2];
+  if (w[0] < 0 || w[1] < 0 || w[2] < 0 || !(sum > 0) || !std::isfinite(sum))
+    throw Usage_error(option + " expects three numbers A,B,C, none negative and not all zero (got '" +
+                      text + "')");
+  for (double& x : w) x /= sum;
+  return w;
 }
 
 /// The sources of `expmap batch`: "all", comma-separated indices "3,17,42",
@@ -316,14 +342,36 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
   Compute_arguments a;
   bool source_given = false;
   parse_map_options(args, "compute", a, [&](const std::string& name, auto take_value) {
-    if (name != "--source") return false;
-    check_once(name, source_given);
-    a.source = parse_index(name, take_value());
-    source_given = true;
+    if (name == "--source") {
+      check_once(name, source_given);
+      a.source = parse_index(name, take_value());
+      source_given = true;
+    } else if (name == "--source-point") {
+      check_once(name, a.source_point.has_value());
+      a.source_point = parse_vector(name, take_value());
+    } else if (name == "--source-face") {
+      check_once(name, a.source_face.has_value());
+      a.source_face = parse_index(name, take_value());
+    } else if (name == "--barycentric") {
+      check_once(name, a.barycentric.has_value());
+      a.barycentric = parse_barycentric(name, take_value());
+    } else {
+      return false;
+    }
     return true;
   });
   if (a.help) return a;
-  if (!source_given) throw Usage_error("--source V is required (a 0-based vertex index)");
+  const int sources = int(source_given) + int(a.source_point.has_value()) +
+                      int(a.source_face.has_value());
+  if (sources != 1)
+    throw Usage_error("give exactly one of --source V (a 0-based vertex index), --source-point "
+                      "X,Y,Z and --source-face F with --barycentric A,B,C (got " +
+                      std::to_string(sources) + ")");
+  if (a.source_face.has_value() != a.barycentric.has_value())
+    throw Usage_error(a.source_face ? "--source-face needs --barycentric A,B,C"
+                                    : "--barycentric is given only with --source-face");
+  if (a.source_point) a.point_option = "--source-point";
+  if (a.source_face) a.point_option = "--source-face";
   using F = Output_format;
   check_patch_and_outputs(a, {F::csv, F::obj, F::svg}, ".csv, .obj or .svg");
   return a;
@@ -339,6 +387,11 @@ inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& arg
       check_once(name, sources_given);
       a.sources = parse_sources(name, take_value());
       sources_given = true;
+    } else if (name == "--source-points") {
+      check_once(name, !a.point_option.empty());
+      a.source_points_file = take_value();
+      if (a.source_points_file.empty()) throw Usage_error("--source-points needs a file name");
+      a.point_option = name;
     } else if (name == "--threads") {
       check_once(name, threads_given);
       const std::size_t threads = parse_index(name, take_value());
@@ -351,8 +404,10 @@ inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& arg
     return true;
   });
   if (a.help) return a;
-  if (!sources_given)
-    throw Usage_error("--sources is required: all, a list I,J,K or @FILE (0-based vertex indices)");
+  if (sources_given == !a.point_option.empty())
+    throw Usage_error(sources_given ? "--sources and --source-points exclude each other"
+                                    : "give --sources (all, a list I,J,K or @FILE of 0-based "
+                                      "vertex indices) or --source-points FILE (X,Y,Z lines)");
   using F = Output_format;
   check_patch_and_outputs(a, {F::csv, F::npz}, ".csv or .npz");
   return a;

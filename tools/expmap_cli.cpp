@@ -8,6 +8,8 @@
 
 #include "Batch_table.h"
 #include "Command_line.h"
+#include "Help_text.h"
+#include "Point_sources.h"
 #include "Progress_bar.h"
 
 #include <expmap/Batch.h>
@@ -23,6 +25,8 @@
 #include <expmap/IO/write_textured_obj.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
+#include <expmap/Surface_point.h>
+#include <expmap/internal/Has_compute_at_point.h>
 #include <expmap/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,21 +44,21 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <type_traits>
+#include <variant>
 #include <vector>
 
 namespace {
 
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
+using Surface_point = expmap::Surface_point<Mesh::Face_index>;
+/// The source of `expmap compute`: a vertex or a point of a face.
+using Source = std::variant<Mesh::Vertex_index, Surface_point>;
 using expmap_cli::Batch_arguments;
 using expmap_cli::Compute_arguments;
+using expmap_cli::Runtime_error;
 using expmap_cli::Usage_error;
-
-/// A failure of the run itself (files, mesh): exit status 1.
-class Runtime_error : public std::runtime_error {
- public:
-  explicit Runtime_error(const std::string& message) : std::runtime_error(message) {}
-};
 
 struct Run {
   Map map;
@@ -66,17 +70,29 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// The map from a vertex or, for a method that maps from points,
+// a point (`checked_method()` refuses points for the others).
+template <class Method_class, class Vertex_or_point, class Query>
+Map compute_from(const Method_class& method, const Vertex_or_point& source,
+                 const expmap::Patch& patch, const Query& query) {
+  if constexpr (std::is_same_v<Vertex_or_point, Surface_point> &&
+                !expmap::internal::has_compute_at_point_v<Method_class>)
+    throw Usage_error("this method does not map from points of faces");
+  else
+    return method.compute(source, patch, query);
+}
+
 // Precomputes with `make()` and answers one query, timing both: the two
 // numbers a user of a precompute-once method cares about.
 template <class Make, class Query>
-Run timed_run(Make make, Mesh::Vertex_index source, const expmap::Patch& patch,
-              const Query& query) {
+Run timed_run(Make make, const Source& source, const expmap::Patch& patch, const Query& query) {
   Run run;
   auto start = std::chrono::steady_clock::now();
   const auto method = make();
   run.precompute_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  run.map = method.compute(source, patch, query);
+  run.map = std::visit([&](const auto& s) { return compute_from(method, s, patch, query); },
+                       source);
   run.query_seconds = seconds_since(start);
   return run;
 }
@@ -156,7 +172,7 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
 }
 
 template <class Method_class>
-Run run_one(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index source,
+Run run_one(const Mesh& mesh, const Compute_arguments& a, const Source& source,
             const expmap::Patch& patch, const expmap::Query_options& query) {
   Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch,
                       query_settings<Method_class>(a, query));
@@ -171,10 +187,11 @@ Run run_one(const Mesh& mesh, const Compute_arguments& a, Mesh::Vertex_index sou
 class Batch_output {
  public:
   // `file_index` as in Mesh_reading_report: the outputs speak of the file's
-  // vertices, not the mesh's.
+  // vertices, not the mesh's. With `point_sources` a map's source is the
+  // position of its point in the list, as it is.
   Batch_output(const std::vector<expmap_cli::Output>& outputs,
-               const std::vector<std::size_t>& file_index)
-      : m_outputs(outputs), m_file_index(file_index) {}
+               const std::vector<std::size_t>& file_index, bool point_sources)
+      : m_outputs(outputs), m_file_index(file_index), m_point_sources(point_sources) {}
   Batch_output(const Batch_output&) = delete;
   Batch_output& operator=(const Batch_output&) = delete;
   ~Batch_output() {
@@ -186,7 +203,8 @@ class Batch_output {
 
   // `chunk` numbers vertices as the mesh does.
   void write(expmap_cli::Batch_table chunk) {
-    for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
+    if (!m_point_sources)
+      for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
     for (std::int64_t& v : chunk.vertex) v = static_cast<std::int64_t>(m_file_index[v]);
     if (!m_opened) open_csv();
     for (std::ofstream& out : m_csv) expmap_cli::write_csv_rows(out, chunk);
@@ -228,6 +246,7 @@ class Batch_output {
 
   std::vector<expmap_cli::Output> m_outputs;
   const std::vector<std::size_t>& m_file_index;
+  bool m_point_sources;
   std::vector<std::ofstream> m_csv;
   expmap_cli::Batch_table m_table;
   bool m_opened = false, m_finished = false;
@@ -240,13 +259,42 @@ struct Batch_run {
   std::vector<std::string> errors;  // one per failed source, in source order
 };
 
+/// The sources of `expmap batch`: mesh vertex indices, or (if not empty)
+/// points of faces.
+struct Batch_sources {
+  std::vector<std::size_t> vertices;
+  std::vector<Surface_point> points;
+  std::size_t size() const { return points.empty() ? vertices.size() : points.size(); }
+};
+
+// The maps of `sources[first, first + count)`, as `compute_from()`.
+template <class Method_class, class Query>
+expmap::Batch_result<Mesh::Vertex_index> compute_part(const Method_class& method,
+                                                      const Batch_sources& sources,
+                                                      std::size_t first, std::size_t count,
+                                                      const expmap::Patch& patch,
+                                                      const expmap::Batch_options& options,
+                                                      const Query& query) {
+  if (sources.points.empty())
+    return method.compute_many_by_index(
+        {sources.vertices.begin() + first, sources.vertices.begin() + first + count}, patch,
+        options, query);
+  if constexpr (expmap::internal::has_compute_at_point_v<Method_class>)
+    return method.compute_many(
+        std::vector<Surface_point>(sources.points.begin() + first,
+                                   sources.points.begin() + first + count),
+        patch, options, query);
+  else
+    throw Usage_error("this method does not map from points of faces");
+}
+
 // Precomputes and maps every source, a chunk of sources at a time: a chunk
 // holds about `rows_in_flight` rows (the first, small one measures the patch
 // size), so memory does not grow with the number of sources.
 template <class Method_class>
-Batch_run run_many(const Mesh& mesh, const Batch_arguments& a,
-                   const std::vector<std::size_t>& sources, const expmap::Patch& patch,
-                   const expmap::Query_options& query, Batch_output& output) {
+Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sources& sources,
+                   const expmap::Patch& patch, const expmap::Query_options& query,
+                   Batch_output& output) {
   const std::size_t rows_in_flight = std::size_t(1) << 22;
   Batch_run run;
   auto start = std::chrono::steady_clock::now();
@@ -264,12 +312,11 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a,
     const std::size_t rows_per_map = done ? std::max<std::size_t>(1, run.rows / done) : 0;
     const std::size_t chunk = std::min(sources.size() - done,
                                        rows_per_map ? std::max<std::size_t>(64, rows_in_flight / rows_per_map) : 64);
-    const std::vector<std::size_t> part(sources.begin() + done, sources.begin() + done + chunk);
-    const auto result =
-        method.compute_many_by_index(part, patch, options, query_settings<Method_class>(a, query));
+    const auto result = compute_part(method, sources, done, chunk, patch, options,
+                                     query_settings<Method_class>(a, query));
     expmap_cli::Batch_table table;
-    for (std::size_t i = 0; i < part.size(); ++i) {
-      table.append(part[i], result.maps[i]);
+    for (std::size_t i = 0; i < chunk; ++i) {
+      table.append(sources.points.empty() ? sources.vertices[done + i] : done + i, result.maps[i]);
       if (!result.errors[i].empty()) run.errors.push_back(result.errors[i]);
     }
     output.write(table);
@@ -288,16 +335,22 @@ struct Method {
   const char* summary;      // for --help
   const char* description;  // for the summary and the SVG caption (heat adds its settings)
   bool takes_heat_options;  // --time-factor, --laplacian, --angles and the like
-  Run (*run)(const Mesh&, const Compute_arguments&, Mesh::Vertex_index, const expmap::Patch&,
+  bool maps_from_points;    // takes --source-point, --source-face and --source-points
+  Run (*run)(const Mesh&, const Compute_arguments&, const Source&, const expmap::Patch&,
              const expmap::Query_options&);
-  Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const std::vector<std::size_t>&,
+  Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const Batch_sources&,
                         const expmap::Patch&, const expmap::Query_options&, Batch_output&);
 };
 
 template <class Method_class>
 constexpr Method method_row(const char* name, const char* summary, const char* description,
                             bool takes_heat_options) {
-  return {name, summary, description, takes_heat_options, run_one<Method_class>,
+  return {name,
+          summary,
+          description,
+          takes_heat_options,
+          expmap::internal::has_compute_at_point_v<Method_class>,
+          run_one<Method_class>,
           run_many<Method_class>};
 }
 
@@ -321,158 +374,19 @@ const Method& find_method(const std::string& name) {
   throw Usage_error("unknown method '" + name + "' (known: " + known + ")");
 }
 
-std::string general_help() {
-  return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-         "                      [options] -o OUT [-o OUT ...]\n"
-         "       expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
-         "                    --vertices K) [options] -o OUT [-o OUT ...]\n"
-         "       expmap --help | expmap compute --help | expmap batch --help\n"
-         "       expmap --version\n"
-         "\n"
-         "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
-         "u = r cos theta, v = r sin theta) around source vertices of a triangle mesh.\n"
-         "\n"
-         "commands:\n"
-         "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
-         "  batch     map a patch around each of many sources on all cores and write\n"
-         "            them as one CSV or NumPy .npz\n"
-         "\n"
-         "exit status: 0 success, 1 runtime error (file, mesh, computation),\n"
-         "             2 usage error (options and their values)\n";
-}
-
-// The options of the patch, the method and the input, which `compute` and
-// `batch` share.
-std::string map_options_help() {
-  std::ostringstream h;
-  const expmap::Heat_options defaults;
-  h << "patch (exactly one):\n"
-       "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
-       "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
-       "                       1 maps the source's whole connected component\n"
-       "  --vertices K         the K >= 1 vertices nearest to the source\n"
-       "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
-       "                       the vertices nearer than the nearest flipped\n"
-       "                       triangle's farthest corner, so none is flipped\n"
-       "method:\n"
-       "  --method M           default: heat; one of\n";
+// The --method lines of the help, from the table.
+std::string method_list() {
+  std::string lines;
   for (const Method& m : methods) {
     std::string name = m.name;
     name.resize(std::max<std::size_t>(name.size() + 1, 7), ' ');
-    h << "                         " << name << m.summary << "\n";
+    lines += "                         " + name + m.summary + "\n";
   }
-  h << "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
-       "                       length; larger is smoother (default: "
-    << defaults.time_factor
-    << ")\n"
-       "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
-       "                       robust on poorly shaped triangles\n"
-       "                       (default: intrinsic-delaunay)\n"
-       "  --vertex-area A      heat only: mixed-voronoi | barycentric, the heat step's\n"
-       "                       mass matrix; the former gives more accurate angles on\n"
-       "                       irregular triangles (default: mixed-voronoi)\n"
-       "  --factor-precision P heat only: double | single, how the factors are kept\n"
-       "                       between queries; single about halves their memory and\n"
-       "                       is faster on large meshes, and moves the map by up to\n"
-       "                       about 4e-7 of its radius (default: double)\n"
-       "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
-       "                       2 the angles' solve runs beside the distance's,\n"
-       "                       0.79-0.97x the time on patches of 750+ vertices, the\n"
-       "                       same map up to round-off (default: 1; expmap batch on\n"
-       "                       more than one thread gives each a source and each map\n"
-       "                       one thread)\n"
-       "  --angles A           heat only: how the angle is read off the heat around the\n"
-       "                       source: heat-quadratic-fit (least-squares quadratic of\n"
-       "                       h on the two-ring; two solves) | heat-gradient (the paper's\n"
-       "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
-       "                       log-heat-quadratic-fit (of log h; one solve per\n"
-       "                       neighbour) (default: heat-quadratic-fit)\n"
-       "  --near-source-blend B,E  heat only: chord directions (and, for the source's\n"
-       "                       neighbours, edge lengths) up to B mean edge lengths\n"
-       "                       from the source, heat coordinates from E on, blended\n"
-       "                       between; 0,0 for pure heat coordinates (default: 2,6)\n"
-       "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
-       "                       tangent plane (default: the x axis, or the y axis where\n"
-       "                       the normal is within 30 degrees of x)\n"
-       "input (what is repaired is said on stderr as 'expmap: note: ...'):\n"
-       "                       The counts a file declares are checked against its\n"
-       "                       size first. Faces that are not an oriented 2-manifold\n"
-       "                       (random orientation, duplicates, non-manifold\n"
-       "                       vertices) are read as a polygon soup and oriented.\n"
-       "  --no-triangulate     refuse faces with more than three vertices instead of\n"
-       "                       splitting them into triangles (the default, which adds\n"
-       "                       no vertex, so indices keep file order; --triangulate\n"
-       "                       asks for the default explicitly)\n"
-       "  --repair             remove degenerate faces (zero area), needles and caps\n"
-       "                       by collapsing and flipping edges; vertex indices in the\n"
-       "                       output stay those of the file\n";
-  return h.str();
+  return lines;
 }
 
-std::string compute_help() {
-  return "usage: expmap compute MESH --source V (--radius R | --fraction F | --vertices K)\n"
-         "                      [--method M] [--time-factor T]\n"
-         "                      [--laplacian L] [--vertex-area A]\n"
-         "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
-         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
-         "                      [--no-triangulate] [--repair] [--trim-folds]\n"
-         "                      -o OUT [-o OUT ...]\n"
-         "\n"
-         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
-         "  --source V           source vertex, 0-based index in file order (required;\n"
-         "                       STL lists no vertices: order of first appearance)\n" +
-         map_options_help() +
-         "output (at least one, format by extension; may repeat):\n"
-         "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"
-         "                             vertex, nearest first; theta in (-pi, pi]\n"
-         "                       .obj  the patch with texture coordinates\n"
-         "                             vt = (u/(2R) + 0.5, v/(2R) + 0.5), R = max r\n"
-         "                       .svg  the patch flattened in the (u, v) plane, shaded\n"
-         "                             by distance, flipped triangles in red\n"
-         "  -h, --help           this help\n"
-         "\n"
-         "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
-         "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
-         "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
-}
-
-std::string batch_help() {
-  return "usage: expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
-         "                    --vertices K) [--method M] [--threads N] [--time-factor T]\n"
-         "                    [--laplacian L] [--vertex-area A]\n"
-         "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
-         "                    [--near-source-blend B,E]\n"
-         "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
-         "                    [--trim-folds]\n"
-         "                    -o OUT [-o OUT ...]\n"
-         "\n"
-         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
-         "  --sources S          the source vertices, 0-based indices in file order\n"
-         "                       (required): all (every vertex with a face), a list\n"
-         "                       I,J,K, or @FILE (indices separated by spaces, commas\n"
-         "                       or newlines; '#' starts a comment); maps come in\n"
-         "                       this order, repeats included\n"
-         "  --threads N          queries run on N threads (default: 0, all cores)\n" +
-         map_options_help() +
-         "output (at least one, format by extension; may repeat):\n"
-         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v,fold_free_radius;\n"
-         "                             per source its patch vertices, nearest first,\n"
-         "                             each row with its source's fold-free radius\n"
-         "                       .npz  NumPy arrays (numpy.load): sources (k),\n"
-         "                             offsets (k+1), vertex, r, theta, u, v,\n"
-         "                             fold_free_radius (k, NaN where a query failed);\n"
-         "                             rows offsets[i] to offsets[i+1] belong to\n"
-         "                             sources[i]\n"
-         "  -h, --help           this help\n"
-         "\n"
-         "A progress bar (maps done, maps per second, time left) goes to stderr when it\n"
-         "is a terminal; a summary to stdout. A source whose query fails (e.g. an\n"
-         "isolated vertex, heat underflow) costs only its own map: it gets a line\n"
-         "'expmap: warning: ...' on stderr and no rows (in .npz an empty range), the\n"
-         "other maps are written, and the exit status is 1. Other errors go to stderr\n"
-         "as 'expmap: error: ...' with exit status 1 (runtime) or 2 (usage), and no\n"
-         "output is left behind.\n";
-}
+std::string compute_help() { return expmap_cli::compute_help(method_list()); }
+std::string batch_help() { return expmap_cli::batch_help(method_list()); }
 
 // The mesh as the methods need it, and where its vertices are in the file.
 struct Input {
@@ -574,6 +488,8 @@ const Method& checked_method(const Compute_arguments& a) {
         "--time-factor, --laplacian, --vertex-area, "
         "--factor-precision, --query-threads, --angles and --near-source-blend apply only to "
         "--method heat");
+  if (!a.point_option.empty() && !method.maps_from_points)
+    throw Usage_error(a.point_option + " is not supported by method " + method.name);
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))
@@ -619,10 +535,22 @@ int run_command(const std::vector<std::string>& args, Arguments (*parse)(const s
   return command(a, method, input);
 }
 
+// The source of `expmap compute` and how the summary names it.
+std::pair<Source, std::string> compute_source(const Compute_arguments& a, const Input& input) {
+  if (a.point_option.empty())
+    return {find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a),
+            "source " + std::to_string(a.source)};
+  expmap_cli::Point_sources<Mesh> points(input.mesh, input.report.file_index, a.mesh);
+  const Surface_point p = a.source_point ? points.locate({*a.source_point}, "--source-point")[0]
+                                         : points.from_file_face(*a.source_face, *a.barycentric);
+  return {p, "source " + points.describe(p)};
+}
+
 int compute(const Compute_arguments& a, const Method& method, const Input& input) {
   const Mesh& mesh = input.mesh;
-  const Mesh::Vertex_index source =
-      find_file_vertex("--source", a.source, mesh_vertex_of_file_vertex(input), a);
+  const std::pair<Source, std::string> named_source = compute_source(a, input);
+  const Source& source = named_source.first;
+  const std::string& source_name = named_source.second;
   expmap::Query_options query;
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
@@ -638,8 +566,8 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
   std::printf("method:      %s\n", run.description.c_str());
   std::printf("precompute:  %.3f s\n", run.precompute_seconds);
   std::printf("query:       %.3f ms\n", 1e3 * run.query_seconds);
-  std::printf("patch:       %zu vertices, %zu triangles, source %zu\n", run.map.size(), folds.total,
-              a.source);
+  std::printf("patch:       %zu vertices, %zu triangles, %s\n", run.map.size(), folds.total,
+              source_name.c_str());
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
   // Where the map is one-to-one, against the patch's own radius.
@@ -679,33 +607,41 @@ std::vector<std::size_t> read_source_file(const std::string& path) {
   return sources;
 }
 
-// The sources of a batch as mesh vertex indices, from file indices that
-// must all be in range; "all" is every vertex of the file in file order
-// but those --repair removed and isolated ones, which have no map.
-std::vector<std::size_t> batch_sources(const Batch_arguments& a, const Input& input) {
+// The sources of a batch: the points of --source-points located on the
+// surface, or mesh vertex indices from file indices that must all be in
+// range; "all" is every vertex of the file in file order but those --repair
+// removed and isolated ones, which have no map.
+Batch_sources batch_sources(const Batch_arguments& a, const Input& input) {
   using Kind = expmap_cli::Source_selection::Kind;
+  Batch_sources sources;
+  if (!a.source_points_file.empty()) {
+    expmap_cli::Point_sources<Mesh> points(input.mesh, input.report.file_index, a.mesh);
+    sources.points = points.locate(expmap_cli::read_point_file(a.source_points_file),
+                                   "--source-points '" + a.source_points_file + "'");
+    return sources;
+  }
   const std::vector<std::size_t> mesh_vertex = mesh_vertex_of_file_vertex(input);
-  std::vector<std::size_t> sources;
   if (a.sources.kind == Kind::all) {
     for (std::size_t v : mesh_vertex)
       if (v != removed_vertex && !input.mesh.is_isolated(Mesh::Vertex_index(static_cast<Mesh::size_type>(v))))
-        sources.push_back(v);
+        sources.vertices.push_back(v);
     return sources;
   }
   for (std::size_t s : a.sources.kind == Kind::list ? a.sources.list : read_source_file(a.sources.file))
-    sources.push_back(static_cast<std::size_t>(find_file_vertex("--sources: vertex", s, mesh_vertex, a)));
+    sources.vertices.push_back(
+        static_cast<std::size_t>(find_file_vertex("--sources: vertex", s, mesh_vertex, a)));
   return sources;
 }
 
 int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   const Mesh& mesh = input.mesh;
-  const std::vector<std::size_t> sources = batch_sources(a, input);
+  const Batch_sources sources = batch_sources(a, input);
   expmap::Query_options query;
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // a column of every output
 
-  Batch_output output(a.outputs, input.report.file_index);
+  Batch_output output(a.outputs, input.report.file_index, !sources.points.empty());
   Batch_run run = with_repair_hint(
       a, [&] { return method.run_many(mesh, a, sources, make_patch(a), query, output); });
   output.finish();
@@ -743,7 +679,7 @@ int main(int argc, char** argv) {
   try {
     if (args.empty()) throw Usage_error("no command given (see expmap --help)");
     if (args[0] == "-h" || args[0] == "--help") {
-      std::cout << general_help()
+      std::cout << expmap_cli::general_help()
                 << "\nSee 'expmap compute --help' and 'expmap batch --help' for the options.\n";
       return 0;
     }

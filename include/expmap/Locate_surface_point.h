@@ -47,13 +47,22 @@ class Surface_point_locator {
 
   /// The point of the surface nearest to `xyz` (any nearest one where
   /// several are equally near), with barycentric coordinates in the order
-  /// of `Surface_point`.
+  /// of `Surface_point`. Coordinates below 1e-12 are round-off of the
+  /// location (a point at a vertex comes back as 1, 0, 1e-16, say): they
+  /// are set to 0 and the others rescaled, so that a point at a vertex's
+  /// position is that vertex, and one on an edge is on the edge, exactly.
   Surface_point<face_descriptor> locate(const std::array<double, 3>& xyz) const {
     const auto location = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(
         Point_3(xyz[0], xyz[1], xyz[2]), m_tree, m_tm);
     Surface_point<face_descriptor> point;
     point.face = location.first;
-    for (int k = 0; k < 3; ++k) point.barycentric[k] = CGAL::to_double(location.second[k]);
+    double sum = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double w = CGAL::to_double(location.second[k]);
+      point.barycentric[k] = w < 1e-12 ? 0.0 : w;
+      sum += point.barycentric[k];
+    }
+    for (double& w : point.barycentric) w /= sum;
     return point;
   }
 

@@ -13,6 +13,9 @@ NumPy in, NumPy out::
     batch.offsets, batch.vertex, batch.u, batch.v, batch.errors
     for source, m in zip(range(100), batch):          # per source: views, no copies
         m.vertices, m.r, m.theta, m.u, m.v, m.error
+    dgpc = expmap.GeodesicPolarCoordinates(V, F)      # sources at points of faces:
+    faces, barycentric = dgpc.locate(points)           # nearest surface points (k x 3 in)
+    dgpc.compute_at_point(points[0], radius=0.1)       # or compute_at(face, barycentric, ...)
 
 The four methods: HeatExponentialMap (Herholz & Alexa 2019, the smoothed
 map by heat diffusion), DiscreteExponentialMap (Schmidt et al. 2006),

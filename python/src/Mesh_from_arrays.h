@@ -17,6 +17,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -78,6 +79,9 @@ struct Arrays_mesh {
   /// `original[i]` is the row vertex i of `mesh` copies; empty if nothing
   /// was split (then the identity).
   std::vector<std::size_t> original;
+  /// The caller's faces, rows of vertex rows (the mesh's may be reordered,
+  /// reversed or fewer).
+  std::vector<std::array<std::size_t, 3>> faces;
   /// What was changed to make a mesh of the arrays, one sentence each.
   std::vector<std::string> notes;
 };
@@ -127,6 +131,8 @@ inline Arrays_mesh mesh_from_arrays(py::handle vertices_object, py::handle faces
 
   Arrays_mesh result;
   result.rows = static_cast<std::size_t>(n);
+  result.faces.reserve(triangles.size());
+  for (const auto& t : triangles) result.faces.push_back({{t[0], t[1], t[2]}});
   const expmap::IO::Mesh_reading_report report =
       expmap::IO::mesh_from_polygon_soup(std::move(points), std::move(triangles), result.mesh);
   result.notes = report.notes;

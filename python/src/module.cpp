@@ -5,6 +5,7 @@
 // `CGAL::Surface_mesh` built from NumPy arrays. Queries run without the GIL,
 // so Python threads (and Dask workers) can query one object at once.
 
+#include "Face_points.h"
 #include "Map_arrays.h"
 #include "Mesh_from_arrays.h"
 
@@ -52,6 +53,9 @@ struct Bound_method {
   std::size_t rows = 0;                ///< rows of the caller's vertex array
   std::vector<std::size_t> original;   ///< row of each mesh vertex; empty: the identity
   std::vector<std::size_t> component;  ///< of each mesh vertex, if `original` is not empty
+  std::vector<std::array<std::size_t, 3>> faces;  ///< the caller's faces, for point sources
+  /// Made by the first point query (`face_points()`), while holding the GIL.
+  mutable std::unique_ptr<const Face_points> points;
 };
 
 /// A label per vertex of `mesh`, equal for vertices joined by faces.
@@ -86,6 +90,7 @@ Bound_method<Method> bind_to_arrays(py::handle vertices, py::handle faces, Make 
   bound.mesh = std::make_unique<Mesh>(std::move(arrays.mesh));
   bound.rows = arrays.rows;
   bound.original = std::move(arrays.original);
+  bound.faces = std::move(arrays.faces);
   if (!bound.original.empty()) bound.component = vertex_components(*bound.mesh);
   py::gil_scoped_release release;  // the precomputation can take seconds
   bound.method = make(*bound.mesh);
@@ -323,7 +328,15 @@ const char* const patch_doc =
     "its fold-free disk: only the vertices nearer than ``fold_free_radius``\n"
     "(the source always) stay, so no triangle of the result is flipped.\n";
 
-/// compute(), compute_many() and the shared properties of every method class.
+}  // namespace
+
+// The queries from points of faces, written with the helpers above.
+#include "Point_queries.h"
+
+namespace {
+
+/// compute(), compute_many(), the queries from points and the shared
+/// properties of every method class.
 template <class Method>
 void add_queries(py::class_<Bound_method<Method>>& c) {
   using Bound = Bound_method<Method>;
@@ -403,6 +416,7 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
        "source's map as a BatchMap of views into the flat arrays. Raises ValueError\n"
        "for invalid arguments (sources out of range, a bad patch).")
           .c_str());
+  add_point_queries(c);
   c.def_property_readonly(
       "number_of_vertices", [](const Bound& b) { return b.rows; },
       "Number of vertices of the mesh: rows of the vertex array it was built from.");

@@ -17,12 +17,17 @@ CLI_NAMES = {"heat": expmap.HeatExponentialMap, "dem": expmap.DiscreteExponentia
 
 
 def cli_map(tmp_path, mesh, method, source, *patch):
+    return cli_map_from(tmp_path, mesh, method, "--source", str(source), *patch)
+
+
+def cli_map_from(tmp_path, mesh, method, *arguments):
+    """The map `expmap compute` writes for the source and patch in `arguments`."""
     cli = os.environ.get("EXPMAP_CLI")
     if not cli:
         pytest.skip("EXPMAP_CLI is not set (ctest sets it)")
-    out = tmp_path / ("%s-%d.csv" % (method, source))
-    subprocess.run([cli, "compute", mesh, "--method", method, "--source", str(source), *patch,
-                    "-o", str(out)], check=True, stdout=subprocess.DEVNULL, timeout=600)
+    out = tmp_path / "map.csv"
+    subprocess.run([cli, "compute", mesh, "--method", method, *arguments, "-o", str(out)],
+                   check=True, stdout=subprocess.DEVNULL, timeout=600)
     with open(out) as f:
         rows = list(csv.DictReader(f))
     return {k: np.array([float(r[k]) for r in rows]) for k in ("vertex", "r", "theta", "u", "v")}
@@ -47,6 +52,21 @@ def test_same_maps_as_the_command_line_program(tmp_path, elephant, method):
     for source in (0, 1000, 2774):
         local = mapper.compute(source, fraction=0.05)
         assert_same_map(local, cli_map(tmp_path, path, method, source, "--fraction", "0.05"))
+
+
+def test_point_sources_as_the_command_line_program(tmp_path, elephant):
+    # The faces of read_mesh() are the file's, corners in its order, as
+    # --source-face takes them.
+    path, V, F = elephant
+    dgpc = expmap.GeodesicPolarCoordinates(V, F)
+    for face, w in ((0, [0.2, 0.3, 0.5]), (4000, [0.0, 0.25, 0.75])):
+        assert_same_map(dgpc.compute_at(face, w, vertices=60),
+                        cli_map_from(tmp_path, path, "dgpc", "--source-face", str(face),
+                                     "--barycentric", ",".join(map(str, w)), "--vertices", "60"))
+    xyz = V[F[77]].mean(axis=0) + 0.001
+    point = ",".join(repr(float(x)) for x in xyz)
+    assert_same_map(dgpc.compute_at_point(xyz, vertices=60),
+                    cli_map_from(tmp_path, path, "dgpc", "--source-point", point, "--vertices", "60"))
 
 
 def test_exact_method_as_the_command_line_program(tmp_path, cactus):

@@ -1,114 +1,24 @@
 // Tests of the `expmap` command-line program, run as a user would run it:
 // the built binary on small mesh files written here, judged by its exit
 // status, its stderr and the files it writes.
-//
-// The binary's path comes from the build (test/CMakeLists.txt):
-//   target_compile_definitions(test_robustness PRIVATE
-//                              EXPMAP_CLI_PATH="$<TARGET_FILE:expmap_cli>")
+// The program and the meshes come from Cli_fixture.h.
+
+#include "Cli_fixture.h"
 
 #include <expmap/version.h>
 
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
-#ifndef EXPMAP_CLI_PATH
-#error "EXPMAP_CLI_PATH must name the expmap program (test/CMakeLists.txt sets it)"
-#else
-
-namespace {
-
+using namespace expmap_test_cli;
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::vector<std::string> read_lines(const fs::path& path) {
-  std::ifstream in(path);
-  std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-/// A fresh folder with the meshes the tests use, removed afterwards.
-struct Cli_fixture {
-  fs::path dir;
-
-  Cli_fixture() {
-    static std::atomic<int> counter{0};
-    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
-    dir = fs::temp_directory_path() / ("expmap_cli_test_" + std::to_string(::getpid()) + "_" +
-                                       std::to_string(stamp) + "_" + std::to_string(counter++));
-    fs::create_directories(dir);
-    write_grid(dir / "grid.off", 6);
-    // Two quads: a valid polygon mesh, triangulated unless --no-triangulate.
-    std::ofstream(dir / "quads.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
-                                        "4 0 1 4 3\n4 1 2 5 4\n";
-  }
-  ~Cli_fixture() {
-    std::error_code ignored;
-    fs::remove_all(dir, ignored);
-  }
-
-  /// An n x n grid of unit squares split into triangles, counter-clockwise
-  /// seen from +z, with the vertices perturbed a little in z so it is not
-  /// exactly flat.
-  static void write_grid(const fs::path& path, int n) {
-    std::ofstream out(path);
-    out << "OFF\n" << (n + 1) * (n + 1) << ' ' << 2 * n * n << " 0\n";
-    for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i)
-        out << i << ' ' << j << ' ' << 0.05 * ((i * 7 + j * 3) % 5) << '\n';
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) {
-        const int a = j * (n + 1) + i, b = a + 1, c = a + n + 2, d = a + n + 1;
-        out << "3 " << a << ' ' << b << ' ' << c << "\n3 " << a << ' ' << c << ' ' << d << '\n';
-      }
-  }
-
-  /// Runs `expmap ARGS` with stdout and stderr captured into the folder;
-  /// returns the exit status (-1 if it did not exit normally, e.g. crashed).
-  int run(const std::string& args) {
-    const std::string command = "'" + std::string(EXPMAP_CLI_PATH) + "' " + args + " >'" +
-                                (dir / "stdout.txt").string() + "' 2>'" +
-                                (dir / "stderr.txt").string() + "'";
-    const int status = std::system(command.c_str());
-    if (status == -1 || !WIFEXITED(status)) return -1;
-    return WEXITSTATUS(status);
-  }
-
-  std::string file(const std::string& name) const { return "'" + (dir / name).string() + "'"; }
-  std::string err() const { return read_text(dir / "stderr.txt"); }
-  std::string out() const { return read_text(dir / "stdout.txt"); }
-
-  /// The command fails cleanly: status `expected`, and stderr is one
-  /// message with the documented prefix.
-  void check_error(const std::string& args, int expected) {
-    BOOST_TEST_CONTEXT("expmap " << args) {
-      const int status = run(args);
-      BOOST_TEST(status == expected);
-      const std::string message = err();
-      BOOST_TEST(message.rfind("expmap: error: ", 0) == 0, "stderr: " << message);
-    }
-  }
-};
-
-}  // namespace
 
 BOOST_FIXTURE_TEST_SUITE(command_line, Cli_fixture)
 
@@ -541,5 +451,3 @@ BOOST_AUTO_TEST_CASE(errors_leave_no_output) {
 }
 
 BOOST_AUTO_TEST_SUITE_END()
-
-#endif  // EXPMAP_CLI_PATH

@@ -64,8 +64,11 @@ std::ostream& write_textured_obj(std::ostream& out, const TriangleMesh& tm,
   const std::streamsize precision = out.precision();
   out.unsetf(std::ios_base::floatfield);
   out.precision(std::numeric_limits<double>::max_digits10);
+  // A map from a point of a face has no vertex at the source.
+  const bool source_is_a_vertex = map.size() > 0 && map.distance[0] == 0;
   out << "# expmap local map: " << map.size() << " vertices, " << triangles.size()
-      << " faces; source = first vertex\n"
+      << (source_is_a_vertex ? " faces; source = first vertex\n"
+                             : " faces; source = a point of a face, at vt (0.5, 0.5)\n")
       << "# vt = (u / (2R) + 0.5, v / (2R) + 0.5), R = max geodesic distance = " << max_distance
       << "\n";
   for (std::size_t i = 0; i < map.size(); ++i) {

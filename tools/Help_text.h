@@ -1,0 +1,193 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_TOOLS_HELP_TEXT_H
+#define EXPMAP_TOOLS_HELP_TEXT_H
+
+/// \file Help_text.h
+/// The help texts of `expmap`, `expmap compute` and `expmap batch`.
+
+#include <expmap/Heat_options.h>
+
+#include <sstream>
+#include <string>
+
+namespace expmap_cli {
+
+/// What `expmap --help` prints first.
+inline std::string general_help() {
+  return "usage: expmap compute MESH (--source V | --source-point X,Y,Z |\n"
+         "                      --source-face F --barycentric A,B,C)\n"
+         "                      (--radius R | --fraction F | --vertices K)\n"
+         "                      [options] -o OUT [-o OUT ...]\n"
+         "       expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
+         "                    (--radius R | --fraction F | --vertices K) [options]\n"
+         "                    -o OUT [-o OUT ...]\n"
+         "       expmap --help | expmap compute --help | expmap batch --help\n"
+         "       expmap --version\n"
+         "\n"
+         "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
+         "u = r cos theta, v = r sin theta) around source vertices or points of a\n"
+         "triangle mesh.\n"
+         "\n"
+         "commands:\n"
+         "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
+         "  batch     map a patch around each of many sources on all cores and write\n"
+         "            them as one CSV or NumPy .npz\n"
+         "\n"
+         "exit status: 0 success, 1 runtime error (file, mesh, computation),\n"
+         "             2 usage error (options and their values)\n";
+}
+
+/// The options of the patch, the method and the input, which `compute` and
+/// `batch` share; `method_list` lists the methods, one indented line each.
+inline std::string map_options_help(const std::string& method_list) {
+  std::ostringstream h;
+  const expmap::Heat_options defaults;
+  h << "patch (exactly one):\n"
+       "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
+       "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
+       "                       1 maps the source's whole connected component\n"
+       "  --vertices K         the K >= 1 vertices nearest to the source\n"
+       "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
+       "                       the vertices nearer than the nearest flipped\n"
+       "                       triangle's farthest corner, so none is flipped\n"
+       "method:\n"
+       "  --method M           default: heat; one of\n";
+  h << method_list;
+  h << "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
+       "                       length; larger is smoother (default: "
+    << defaults.time_factor
+    << ")\n"
+       "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
+       "                       robust on poorly shaped triangles\n"
+       "                       (default: intrinsic-delaunay)\n"
+       "  --vertex-area A      heat only: mixed-voronoi | barycentric, the heat step's\n"
+       "                       mass matrix; the former gives more accurate angles on\n"
+       "                       irregular triangles (default: mixed-voronoi)\n"
+       "  --factor-precision P heat only: double | single, how the factors are kept\n"
+       "                       between queries; single about halves their memory and\n"
+       "                       is faster on large meshes, and moves the map by up to\n"
+       "                       about 4e-7 of its radius (default: double)\n"
+       "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
+       "                       2 the angles' solve runs beside the distance's,\n"
+       "                       0.79-0.97x the time on patches of 750+ vertices, the\n"
+       "                       same map up to round-off (default: 1; expmap batch on\n"
+       "                       more than one thread gives each a source and each map\n"
+       "                       one thread)\n"
+       "  --angles A           heat only: how the angle is read off the heat around the\n"
+       "                       source: heat-quadratic-fit (least-squares quadratic of\n"
+       "                       h on the two-ring; two solves) | heat-gradient (the paper's\n"
+       "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
+       "                       log-heat-quadratic-fit (of log h; one solve per\n"
+       "                       neighbour) (default: heat-quadratic-fit)\n"
+       "  --near-source-blend B,E  heat only: chord directions (and, for the source's\n"
+       "                       neighbours, edge lengths) up to B mean edge lengths\n"
+       "                       from the source, heat coordinates from E on, blended\n"
+       "                       between; 0,0 for pure heat coordinates (default: 2,6)\n"
+       "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
+       "                       tangent plane (default: the x axis, or the y axis where\n"
+       "                       the normal is within 30 degrees of x)\n"
+       "input (what is repaired is said on stderr as 'expmap: note: ...'):\n"
+       "                       The counts a file declares are checked against its\n"
+       "                       size first. Faces that are not an oriented 2-manifold\n"
+       "                       (random orientation, duplicates, non-manifold\n"
+       "                       vertices) are read as a polygon soup and oriented.\n"
+       "  --no-triangulate     refuse faces with more than three vertices instead of\n"
+       "                       splitting them into triangles (the default, which adds\n"
+       "                       no vertex, so indices keep file order; --triangulate\n"
+       "                       asks for the default explicitly)\n"
+       "  --repair             remove degenerate faces (zero area), needles and caps\n"
+       "                       by collapsing and flipping edges; vertex indices in the\n"
+       "                       output stay those of the file\n";
+  return h.str();
+}
+
+/// `expmap compute --help`.
+inline std::string compute_help(const std::string& method_list) {
+  return "usage: expmap compute MESH (--source V | --source-point X,Y,Z |\n"
+         "                      --source-face F --barycentric A,B,C)\n"
+         "                      (--radius R | --fraction F | --vertices K) [--method M] [--time-factor T]\n"
+         "                      [--laplacian L] [--vertex-area A]\n"
+         "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
+         "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
+         "                      [--no-triangulate] [--repair] [--trim-folds]\n"
+         "                      -o OUT [-o OUT ...]\n"
+         "\n"
+         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
+         "source (exactly one):\n"
+         "  --source V           source vertex, 0-based index in file order (STL lists\n"
+         "                       no vertices: order of first appearance)\n"
+         "  --source-point X,Y,Z the surface point nearest to (X, Y, Z); a note on stderr\n"
+         "                       if that is off the surface by more than 1e-6 of the\n"
+         "                       bounding box's diagonal\n"
+         "  --source-face F      the point of face F (0-based, file order) with\n"
+         "  --barycentric A,B,C  barycentric coordinates A, B, C of its corners in the\n"
+         "                       file's order (not negative; rescaled to sum 1);\n"
+         "                       1,0,0 is the first corner\n"
+         "                       A point that is no vertex has no row at r = 0, the\n"
+         "                       nearest corner counts as the map's source, and\n"
+         "                       --vertices and --fraction count vertices only.\n"
+         "                       Not all methods map from points (an error says so).\n" +
+         map_options_help(method_list) +
+         "output (at least one, format by extension; may repeat):\n"
+         "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"
+         "                             vertex, nearest first; theta in (-pi, pi]\n"
+         "                       .obj  the patch with texture coordinates\n"
+         "                             vt = (u/(2R) + 0.5, v/(2R) + 0.5), R = max r\n"
+         "                       .svg  the patch flattened in the (u, v) plane, shaded\n"
+         "                             by distance, flipped triangles in red\n"
+         "  -h, --help           this help\n"
+         "\n"
+         "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
+         "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
+         "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
+}
+
+/// `expmap batch --help`.
+inline std::string batch_help(const std::string& method_list) {
+  return "usage: expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
+         "                    (--radius R | --fraction F | --vertices K)\n"
+         "                    [--method M] [--threads N] [--time-factor T]\n"
+         "                    [--laplacian L] [--vertex-area A]\n"
+         "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
+         "                    [--near-source-blend B,E]\n"
+         "                    [--reference X,Y,Z] [--no-triangulate] [--repair]\n"
+         "                    [--trim-folds]\n"
+         "                    -o OUT [-o OUT ...]\n"
+         "\n"
+         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
+         "  --sources S          the source vertices, 0-based indices in file order\n"
+         "                       (required): all (every vertex with a face), a list\n"
+         "                       I,J,K, or @FILE (indices separated by spaces, commas\n"
+         "                       or newlines; '#' starts a comment); maps come in\n"
+         "                       this order, repeats included\n"
+         "  --source-points FILE instead of --sources: points, one X,Y,Z a line (commas\n"
+         "                       or spaces; '#' starts a comment), each mapped from the\n"
+         "                       surface point nearest to it (as compute's\n"
+         "                       --source-point); the outputs' source is then the\n"
+         "                       point's 0-based position in FILE\n"
+         "  --threads N          queries run on N threads (default: 0, all cores)\n" +
+         map_options_help(method_list) +
+         "output (at least one, format by extension; may repeat):\n"
+         "  -o, --output OUT     .csv  header source,vertex,r,theta,u,v,fold_free_radius;\n"
+         "                             per source its patch vertices, nearest first,\n"
+         "                             each row with its source's fold-free radius\n"
+         "                       .npz  NumPy arrays (numpy.load): sources (k),\n"
+         "                             offsets (k+1), vertex, r, theta, u, v,\n"
+         "                             fold_free_radius (k, NaN where a query failed);\n"
+         "                             rows offsets[i] to offsets[i+1] belong to\n"
+         "                             sources[i]\n"
+         "  -h, --help           this help\n"
+         "\n"
+         "A progress bar (maps done, maps per second, time left) goes to stderr when it\n"
+         "is a terminal; a summary to stdout. A source whose query fails (e.g. an\n"
+         "isolated vertex, heat underflow) costs only its own map: it gets a line\n"
+         "'expmap: warning: ...' on stderr and no rows (in .npz an empty range), the\n"
+         "other maps are written, and the exit status is 1. Other errors go to stderr\n"
+         "as 'expmap: error: ...' with exit status 1 (runtime) or 2 (usage), and no\n"
+         "output is left behind.\n";
+}
+
+}  // namespace expmap_cli
+
+#endif  // EXPMAP_TOOLS_HELP_TEXT_H
