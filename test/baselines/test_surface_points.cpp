@@ -7,99 +7,13 @@
 
 #include <boost/test/unit_test.hpp>
 
-#include <map>
-
-#include "baseline_fixtures.h"
+#include "surface_point_fixtures.h"
 
 using namespace expmap_test;
 
 namespace {
-
-using Face = Surface_mesh::Face_index;
-using Point_source = expmap::Surface_point<Face>;
-
 template <class Mesh>
 using Dgpc = expmap::Geodesic_polar_coordinates<Mesh>;
-
-std::array<double, 3> position(const Surface_mesh& mesh, const Point_source& p) {
-  const auto h = mesh.halfedge(p.face);
-  const Point corners[3] = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
-                            mesh.point(mesh.target(mesh.next(h)))};
-  std::array<double, 3> x{{0, 0, 0}};
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) x[d] += p.barycentric[k] * corners[k][d];
-  return x;
-}
-
-// Mean |r error| and mean |theta error| (the best rotation removed) of a map
-// from a point of the unit sphere, against the exact map from the point
-// projected onto the sphere.
-template <class Map>
-Sphere_errors point_sphere_errors(const Map& map, const std::array<double, 3>& source,
-                                  const expmap_analytic::Triangle_soup& soup) {
-  Sphere_errors e;
-  std::vector<double> differences;
-  double c = 0, s = 0;
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    const expmap_analytic::Polar exact = expmap_analytic::sphere_exponential_map(
-        source, soup.points[map.indices[i]], 1.0, map.axis_u);
-    e.distance += std::abs(map.distance[i] - exact.r);
-    const double d = std::remainder(map.angle[i] - exact.theta_unrotated, 2 * M_PI);
-    differences.push_back(d);
-    c += std::cos(d);
-    s += std::sin(d);
-  }
-  const double rotation = std::atan2(s, c);
-  for (double d : differences) e.angle += angle_difference(d, rotation);
-  e.vertices = differences.size();
-  e.distance /= static_cast<double>(e.vertices);
-  e.angle /= static_cast<double>(e.vertices);
-  return e;
-}
-
-template <template <class> class Method>
-void check_corner_is_the_vertex() {
-  const auto& soup = icosphere(4);
-  const auto mesh = to_mesh<Surface_mesh>(soup);
-  const Method<Surface_mesh> method(mesh);
-  for (std::size_t f : random_sources(mesh.number_of_faces(), 3, 5)) {
-    const Face face(static_cast<Surface_mesh::size_type>(f));
-    const auto h = mesh.halfedge(face);
-    const Surface_mesh::Vertex_index corner[3] = {mesh.source(h), mesh.target(h),
-                                                  mesh.target(mesh.next(h))};
-    for (int k = 0; k < 3; ++k) {
-      Point_source p{face, {{0, 0, 0}}};
-      p.barycentric[k] = 1;
-      for (const expmap::Patch& patch :
-           {expmap::Patch::geodesic_radius(0.4), expmap::Patch::vertex_count(100)})
-        check_same_map(method.compute(p, patch), method.compute(corner[k], patch), 1e-12);
-    }
-  }
-}
-
-// The same point on an edge, given from the edge's two faces.
-template <template <class> class Method>
-void check_edge_point_from_both_faces(double tolerance) {
-  const auto& soup = icosphere(4);
-  const auto mesh = to_mesh<Surface_mesh>(soup);
-  const Method<Surface_mesh> method(mesh);
-  for (std::size_t f : random_sources(mesh.number_of_faces(), 3, 11)) {
-    const Face face(static_cast<Surface_mesh::size_type>(f));
-    const auto h = mesh.halfedge(face);
-    const Point_source p{face, {{0.35, 0.65, 0}}};
-    std::map<Surface_mesh::Vertex_index, double> weight{{mesh.source(h), 0.35},
-                                                       {mesh.target(h), 0.65}};
-    const Face other = mesh.face(mesh.opposite(h));
-    const auto g = mesh.halfedge(other);
-    const Point_source q{other, {{weight[mesh.source(g)], weight[mesh.target(g)],
-                                  weight[mesh.target(mesh.next(g))]}}};
-    const auto a = method.compute(p, expmap::Patch::geodesic_radius(0.4));
-    const auto b = method.compute(q, expmap::Patch::geodesic_radius(0.4));
-    BOOST_TEST(a.size() > 100u);
-    check_same_map(a, b, tolerance);
-  }
-}
-
 }  // namespace
 
 BOOST_AUTO_TEST_SUITE(surface_points)
@@ -118,63 +32,31 @@ BOOST_AUTO_TEST_CASE(locator_finds_the_face_and_coordinates) {
   BOOST_TEST(x[2] > 0.99);  // nearest the north pole
 }
 
-BOOST_AUTO_TEST_CASE(dgpc_corner_is_the_vertex) { check_corner_is_the_vertex<Dgpc>(); }
+BOOST_AUTO_TEST_CASE(dgpc_corner_is_the_vertex) {
+  check_corner_is_the_vertex<Dgpc>(icosphere(6), 0.4, 1e-12);
+}
 
-BOOST_AUTO_TEST_CASE(dgpc_edge_point_from_both_faces) { check_edge_point_from_both_faces<Dgpc>(1e-9); }
+BOOST_AUTO_TEST_CASE(dgpc_edge_point_from_both_faces) {
+  check_edge_point_from_both_faces<Dgpc>(icosphere(6), 0.4, 1e-9, 1.5);
+}
 
 // DGPC is exact on a plane from a vertex, and from a point: the front
 // starts with the face's unfolding, exact on a plane.
 BOOST_AUTO_TEST_CASE(dgpc_exact_on_a_planar_grid) {
-  const auto soup = planar_grid(24, true);
-  const auto mesh = to_mesh<Surface_mesh>(soup);
-  const Dgpc<Surface_mesh> dgpc(mesh);
-  for (std::size_t f : random_sources(mesh.number_of_faces(), 5, 17)) {
-    const Point_source p{Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.5, 0.3}}};
-    const auto source = position(mesh, p);
-    const auto map = dgpc.compute(p, expmap::Patch::geodesic_radius(0.3));
-    BOOST_TEST(map.size() > 30u);
-    double distance = 0, angle = 0;
-    for (std::size_t i = 0; i < map.size(); ++i) {
-      const auto exact =
-          expmap_analytic::plane_exponential_map(source, soup.points[map.indices[i]], map.axis_u);
-      distance = std::max(distance, std::abs(map.distance[i] - exact.r));
-      angle = std::max(angle, angle_difference(map.angle[i], exact.theta_unrotated));
-    }
-    BOOST_TEST(distance < 1e-12);
-    BOOST_TEST(angle < 1e-9);
-  }
+  check_exact_on_a_plane_from_boundary_faces<Dgpc>(1e-12, 1e-9);
 }
 
 // A point inside a face against the exact map of the unit sphere from that
 // point, and the face's corners as sources for comparison.
 BOOST_AUTO_TEST_CASE(dgpc_sphere_point_as_accurate_as_a_vertex) {
-  const auto& soup = icosphere(5);
-  const auto mesh = to_mesh<Surface_mesh>(soup);
-  const Dgpc<Surface_mesh> dgpc(mesh);
-  const auto patch = expmap::Patch::geodesic_radius(0.5);
-  std::vector<Point_source> points;
-  for (std::size_t f : random_sources(mesh.number_of_faces(), 5, 2018))
-    points.push_back({Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.3, 0.5}}});
-  expmap::Batch_options two_threads;
-  two_threads.threads = 2;
-  const auto batch = dgpc.compute_many(points, patch, two_threads);
-  BOOST_TEST(batch.failures() == 0u);
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Sphere_errors e = point_sphere_errors(batch.maps[i], position(mesh, points[i]), soup);
-    Sphere_errors corners;
-    for (auto v : CGAL::vertices_around_face(mesh.halfedge(points[i].face), mesh)) {
-      const Sphere_errors c = sphere_errors(dgpc.compute(v, patch), soup);
-      corners.distance += c.distance / 3;
-      corners.angle += c.angle_rotation_removed / 3;
-    }
-    BOOST_TEST_MESSAGE("DGPC, point in face " << points[i].face << ": mean |r error| " << e.distance
-                                              << ", mean |theta error| " << e.angle
-                                              << "; its corners as sources: " << corners.distance
-                                              << ", " << corners.angle);
-    BOOST_TEST(e.vertices > 500u);
-    BOOST_TEST(e.distance <= 1.5 * corners.distance);
-    BOOST_TEST(e.angle <= 1.5 * corners.angle);
-  }
+  check_sphere_point_as_accurate_as_a_vertex<Dgpc>("DGPC", icosphere(5), 0.5, 1.5);
+}
+
+// The sphere's exact map itself moves by up to 1.11 times the distance
+// moved; DGPC measured 1.02 .. 1.16 inside a face, up to 1.46 across an edge.
+BOOST_AUTO_TEST_CASE(dgpc_no_jump_when_the_point_moves) {
+  check_no_jump<Dgpc>("DGPC", icosphere(5), 0.4, 0.02, 2);
+  check_no_jump<Dgpc>("DGPC, jittered", jittered_icosphere(), 0.4, 0.02, 2);
 }
 
 BOOST_AUTO_TEST_CASE(bad_points) {
