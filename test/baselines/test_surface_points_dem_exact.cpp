@@ -81,8 +81,11 @@ BOOST_AUTO_TEST_CASE(dem_exact_on_a_plane_from_boundary_faces) {
   check_exact_on_a_plane_from_boundary_faces<Dem>(1e-12, 1e-9);
 }
 
+// A point on an edge is moved into its face by 1e-11 of the way to the
+// opposite corner (Exact_exponential_map::edge_shift): measured 1.0e-12 in r
+// and 5e-11 in theta from points on boundary edges.
 BOOST_AUTO_TEST_CASE(exact_exact_on_a_plane_from_boundary_faces) {
-  check_exact_on_a_plane_from_boundary_faces<Exact>(1e-12, 1e-9);
+  check_exact_on_a_plane_from_boundary_faces<Exact>(1e-11, 1e-9);
 }
 
 BOOST_AUTO_TEST_SUITE_END()
