@@ -218,6 +218,37 @@ void check_point_patch_kinds(bool nearest_by_reported_distance, double tolerance
   BOOST_TEST(method.compute(p, expmap::Patch::vertex_count(1)).size() == 1u);
 }
 
+/// Bad points throw Invalid_input: coordinates negative, all zero or not
+/// finite, a face out of range, a reference direction along the point's
+/// normal (named by the point's face).
+template <template <class> class Method>
+void check_bad_points() {
+  const auto mesh = to_mesh<Surface_mesh>(icosphere(5));
+  const Method<Surface_mesh> method(mesh);
+  const auto patch = expmap::Patch::vertex_count(10);
+  BOOST_CHECK_THROW(method.compute(Point_source{Face(0), {{-0.5, 1, 0.5}}}, patch),
+                    expmap::Invalid_input);
+  BOOST_CHECK_THROW(method.compute(Point_source{Face(0), {{0, 0, 0}}}, patch),
+                    expmap::Invalid_input);
+  BOOST_CHECK_THROW(method.compute(Point_source{Face(0), {{NAN, 0, 1}}}, patch),
+                    expmap::Invalid_input);
+  const Face beyond(static_cast<Surface_mesh::size_type>(mesh.number_of_faces() + 3));
+  BOOST_CHECK_THROW(method.compute(Point_source{beyond, {{0.3, 0.3, 0.4}}}, patch),
+                    expmap::Invalid_input);
+  // A count patch from a point counts vertices only.
+  const Point_source p{Face(7), {{0.3, 0.3, 0.4}}};
+  const auto map = method.compute(p, patch);
+  BOOST_TEST(map.size() == 10u);
+  expmap::Query_options along_normal;
+  along_normal.reference_direction = map.normal;
+  try {
+    method.compute(p, patch, along_normal);
+    BOOST_ERROR("a reference direction along the normal was accepted");
+  } catch (const expmap::Invalid_input& e) {
+    BOOST_TEST(std::string(e.what()).find("source point in face 7") != std::string::npos);
+  }
+}
+
 /// The largest move of a vertex's (u, v) between two maps, over the
 /// vertices both hold.
 template <class Map>

@@ -59,15 +59,6 @@ BOOST_AUTO_TEST_CASE(dgpc_no_jump_when_the_point_moves) {
   check_no_jump<Dgpc>("DGPC, jittered", jittered_icosphere(), 0.4, 0.02, 2);
 }
 
-BOOST_AUTO_TEST_CASE(bad_points) {
-  const auto mesh = to_mesh<Surface_mesh>(icosphere(2));
-  const Dgpc<Surface_mesh> dgpc(mesh);
-  const auto patch = expmap::Patch::vertex_count(10);
-  BOOST_CHECK_THROW(dgpc.compute(Point_source{Face(0), {{-0.5, 1, 0.5}}}, patch), expmap::Invalid_input);
-  BOOST_CHECK_THROW(dgpc.compute(Point_source{Face(0), {{0, 0, 0}}}, patch), expmap::Invalid_input);
-  BOOST_CHECK_THROW(dgpc.compute(Point_source{Face(0), {{NAN, 0, 1}}}, patch), expmap::Invalid_input);
-  // A count patch from a point counts vertices only.
-  BOOST_TEST(dgpc.compute(Point_source{Face(0), {{0.3, 0.3, 0.4}}}, patch).size() == 10u);
-}
+BOOST_AUTO_TEST_CASE(dgpc_bad_points) { check_bad_points<Dgpc>(); }
 
 BOOST_AUTO_TEST_SUITE_END()

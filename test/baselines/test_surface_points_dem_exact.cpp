@@ -88,4 +88,8 @@ BOOST_AUTO_TEST_CASE(exact_exact_on_a_plane_from_boundary_faces) {
   check_exact_on_a_plane_from_boundary_faces<Exact>(1e-11, 1e-9);
 }
 
+BOOST_AUTO_TEST_CASE(dem_bad_points) { check_bad_points<Dem>(); }
+
+BOOST_AUTO_TEST_CASE(exact_bad_points) { check_bad_points<Exact>(); }
+
 BOOST_AUTO_TEST_SUITE_END()
