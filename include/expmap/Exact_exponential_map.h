@@ -319,7 +319,7 @@ Exact_exponential_map<TM, VPM>::compute_at_point(const internal::Point_source& p
   // way to the opposite corner): from a location exactly on an edge, CGAL
   // 5.5's sequence tree gives wrong distances (mean |r error| 7e-3 on the
   // 10,242-vertex unit sphere, against 3e-5 from inside a face). The move
-  // changes distances by less than 1e-12 of the face's size; path points
+  // changes distances by at most edge_shift times the face's size; path points
   // within `near` of the point (the crossing of the edge, if the path
   // leaves across it) are taken for the point itself.
   std::array<double, 3> weight = point.weight;
