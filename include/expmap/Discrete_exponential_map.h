@@ -13,6 +13,7 @@
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Point_source.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Tangent_frame.h>
@@ -21,6 +22,7 @@
 
 #include <CGAL/Default.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -70,6 +72,10 @@ namespace expmap {
 /// average only use existing edges. Work and memory touched per query are
 /// proportional to the search, never to the mesh.
 ///
+/// From a point of a face (`compute()` with a `Surface_point`), the search
+/// starts at the face's corners, which take their exact vectors from the
+/// point in the face's plane; see `compute_at_point()`.
+///
 /// \tparam TriangleMesh a model of `FaceListGraph` whose faces are triangles
 ///         (e.g. `CGAL::Surface_mesh`, `CGAL::Polyhedron_3`).
 /// \tparam VertexPointMap a `ReadablePropertyMap` from vertex descriptors to
@@ -110,6 +116,18 @@ class Discrete_exponential_map
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
+  /// A point source that is no vertex (reached through `compute()` with a
+  /// `Surface_point`). The search starts at the face's corners (and, for a
+  /// point on an edge, the apex across it: the same vertices from either
+  /// face of the edge), at their distances from the point; they take their
+  /// vectors from the point in the face's unfolding, read in the point's
+  /// frame (native angles of `internal::point_one_ring()` minus its
+  /// reference angle, as DGPC's). Every other vertex gets the upwind
+  /// average, its frame turn taken relative to the point's normal. On a
+  /// plane the map is exact, as from a vertex.
+  Result compute_at_point(const internal::Point_source& point, const Patch& patch,
+                          const Query_options& query = {}) const;
+
  private:
   struct Workspace {
     explicit Workspace(std::size_t n) : dijkstra(n), u(n), turn(n) {
@@ -123,6 +141,19 @@ class Discrete_exponential_map
     internal::Vertex_marks map_position;  // assemble_local_map's scratch
     std::vector<internal::Polar_entry> entries;
   };
+
+  // A vertex whose coordinates are known before the search: the source
+  // vertex, or the corners around a point source.
+  struct Seed {
+    int vertex;
+    double distance;
+    std::array<double, 2> u;
+  };
+
+  // The search from the seeds; `s` is the source vertex (-1 for a point),
+  // whose neighbours take their edge vectors as they are.
+  Result propagate(const internal::Checked_query& q, int s, const std::vector<Seed>& seeds,
+                   const Patch& patch, const Query_options& query) const;
 
   // Coordinates of the frozen vertex q from its frozen neighbours.
   std::array<double, 2> upwind_average(int q, double d, int source,
@@ -187,8 +218,35 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
                                                      const Query_options& query) const {
   const internal::Checked_query q =
       internal::checked_query(m_indexed.arrays, source_index, patch, query);
-  const int s = q.source;
+  return propagate(q, q.source, {Seed{q.source, 0.0, {{0.0, 0.0}}}}, patch, query);
+}
 
+template <class TM, class VPM>
+typename Discrete_exponential_map<TM, VPM>::Result
+Discrete_exponential_map<TM, VPM>::compute_at_point(const internal::Point_source& point,
+                                                     const Patch& patch,
+                                                     const Query_options& query) const {
+  const internal::Checked_query q =
+      internal::checked_point_query(m_indexed.arrays, point, patch, query);
+  const internal::Point_ring ring = internal::point_one_ring(m_indexed.arrays, point, q.frame);
+  // Only the vertices every face naming the point sees: a point on an edge
+  // then gets the same map from both faces. (The other apexes of the ring
+  // would be exact too, but would make the start depend on the face.)
+  std::vector<Seed> seeds;
+  for (std::size_t i = 0; i < ring.ring.vertex.size(); ++i) {
+    if (!ring.face_independent[i]) continue;
+    const double theta = ring.ring.angle[i] - ring.ring.reference_angle;
+    const double r = ring.distance[i];
+    seeds.push_back({ring.ring.vertex[i], r, {{r * std::cos(theta), r * std::sin(theta)}}});
+  }
+  return propagate(q, -1, seeds, patch, query);
+}
+
+template <class TM, class VPM>
+typename Discrete_exponential_map<TM, VPM>::Result
+Discrete_exponential_map<TM, VPM>::propagate(const internal::Checked_query& q, int s,
+                                              const std::vector<Seed>& seeds, const Patch& patch,
+                                              const Query_options& query) const {
   auto ws = m_workspaces.acquire(
       [this] { return std::make_unique<Workspace>(this->number_of_vertices()); });
   ws->wanted.next_query();
@@ -198,22 +256,28 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
       q.kind == Patch::Kind::geodesic_radius ? dilation_bound * patch.radius()
                                            : std::numeric_limits<double>::infinity();
 
-  internal::fibonacci_dijkstra(m_indexed.arrays, s, ws->dijkstra, [&](int v, double d) {
-    if (d > search_radius) return false;
-    if ((q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction) &&
-        ws->dijkstra.order.size() >= q.target)
-      return false;
-    if (q.kind == Patch::Kind::vertex_set && missing == 0) return false;
-    if (v == s) {
-      ws->u[v] = {{0.0, 0.0}};
-      ws->turn[v] = {{1.0, 0.0}};
-    } else {
-      ws->turn[v] = internal::frame_rotation(m_frames.normal[v], m_frames.e1[v], q.frame);
-      ws->u[v] = upwind_average(v, d, s, q.frame, *ws);
-    }
-    if (q.kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v)) --missing;
-    return true;
-  });
+  std::vector<internal::Dijkstra_seed> starts;
+  for (const Seed& seed : seeds) starts.push_back({seed.vertex, seed.distance});
+  internal::fibonacci_dijkstra(
+      m_indexed.arrays, starts.data(), starts.data() + starts.size(), ws->dijkstra,
+      [&](int v, double d) {
+        if (d > search_radius) return false;
+        if ((q.kind == Patch::Kind::vertex_count || q.kind == Patch::Kind::fraction) &&
+            ws->dijkstra.order.size() >= q.target)
+          return false;
+        if (q.kind == Patch::Kind::vertex_set && missing == 0) return false;
+        const auto seed = std::find_if(seeds.begin(), seeds.end(),
+                                       [v](const Seed& x) { return x.vertex == v; });
+        if (v == s) {
+          ws->u[v] = {{0.0, 0.0}};
+          ws->turn[v] = {{1.0, 0.0}};
+        } else {
+          ws->turn[v] = internal::frame_rotation(m_frames.normal[v], m_frames.e1[v], q.frame);
+          ws->u[v] = seed != seeds.end() ? seed->u : upwind_average(v, d, s, q.frame, *ws);
+        }
+        if (q.kind == Patch::Kind::vertex_set && ws->wanted.is_marked(v)) --missing;
+        return true;
+      });
 
   ws->entries.clear();
   for (int v : ws->dijkstra.order) {
@@ -223,8 +287,10 @@ Discrete_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, co
     if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
     ws->entries.push_back({v, r, std::atan2(ws->u[v][1], ws->u[v][0])});
   }
-  return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
-                                      q.frame, query, ws->map_position);
+  // A point source is no vertex, so no row of the map (doc/surface_points.md).
+  return internal::assemble_local_map(m_indexed.arrays, s >= 0 ? s : q.source, ws->entries,
+                                      m_indexed.descriptors, q.frame, query, ws->map_position,
+                                      s >= 0);
 }
 
 }  // namespace expmap

@@ -28,10 +28,18 @@ struct Dijkstra_workspace {
   std::vector<int> order;        ///< settled vertices, nearest first
 };
 
-/// Dijkstra over the mesh edges (Euclidean lengths) from `source`, written
-/// out rather than through `boost::dijkstra_shortest_paths` because that one
-/// allocates and initializes property maps of the whole mesh per call and
-/// can only be stopped by throwing.
+/// A vertex where `fibonacci_dijkstra()` starts, at a given distance.
+struct Dijkstra_seed {
+  int vertex;
+  double distance;
+};
+
+/// Dijkstra over the mesh edges (Euclidean lengths) from the seeds in
+/// [`first`, `last`) (a point of a face starts at its corners, at their
+/// distances from the point), written out rather than through
+/// `boost::dijkstra_shortest_paths` because that one allocates and
+/// initializes property maps of the whole mesh per call and can only be
+/// stopped by throwing.
 ///
 /// Each popped vertex `v` at graph distance `d` is offered to
 /// `visit(v, d)` before it is settled, while every vertex settled so far is
@@ -39,14 +47,18 @@ struct Dijkstra_workspace {
 /// unsettled; returning true settles it and relaxes its edges.
 /// Only the visited part of the mesh is touched.
 template <class Visit>
-void fibonacci_dijkstra(const Mesh_arrays& m, int source, Dijkstra_workspace& ws, Visit visit) {
+void fibonacci_dijkstra(const Mesh_arrays& m, const Dijkstra_seed* first, const Dijkstra_seed* last,
+                        Dijkstra_workspace& ws, Visit visit) {
   ws.queue.clear();
   ws.settled.next_query();
   ws.reached.next_query();
   ws.order.clear();
-  ws.reached.mark(source, 0);
-  ws.distance[source] = 0;
-  ws.queue.push_or_decrease(source, 0.0);
+  for (const Dijkstra_seed* seed = first; seed != last; ++seed) {
+    if (ws.reached.is_marked(seed->vertex) && ws.distance[seed->vertex] <= seed->distance) continue;
+    ws.reached.mark(seed->vertex, 0);
+    ws.distance[seed->vertex] = seed->distance;
+    ws.queue.push_or_decrease(seed->vertex, seed->distance);
+  }
   while (!ws.queue.empty()) {
     const auto [v, d] = ws.queue.pop();
     if (!visit(v, d)) return;
@@ -63,6 +75,13 @@ void fibonacci_dijkstra(const Mesh_arrays& m, int source, Dijkstra_workspace& ws
       }
     }
   }
+}
+
+/// As above, from the single vertex `source` at distance 0.
+template <class Visit>
+void fibonacci_dijkstra(const Mesh_arrays& m, int source, Dijkstra_workspace& ws, Visit visit) {
+  const Dijkstra_seed seed{source, 0.0};
+  fibonacci_dijkstra(m, &seed, &seed + 1, ws, visit);
 }
 
 }  // namespace internal

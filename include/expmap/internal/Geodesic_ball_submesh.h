@@ -26,6 +26,53 @@ struct Ball_submesh {
   std::size_t source = 0;        ///< the source's index in `point`
 };
 
+namespace ball_detail {
+
+// Grows the selection from the faces [first, last) (already marked in
+// `face_marks` and queued), adding each face that shares a vertex with a
+// selected one and lies within `radius` of `center`.
+inline void grow(const Mesh_arrays& m, const Vector3& center, double radius,
+                 Vertex_marks& face_marks, Vertex_marks& vertex_marks,
+                 std::vector<int>& face_queue, Ball_submesh& out) {
+  using K = CGAL::Simple_cartesian<double>;
+  auto point = [&](int v) { return K::Point_3(m.point[v][0], m.point[v][1], m.point[v][2]); };
+  const K::Point_3 s(center[0], center[1], center[2]);
+  const double squared_radius = radius * radius;
+  auto local = [&](int v) {
+    if (!vertex_marks.is_marked(v)) {
+      vertex_marks.mark(v, static_cast<int>(out.point.size()));
+      out.point.push_back(m.point[v]);
+      out.mesh_vertex.push_back(v);
+    }
+    return static_cast<std::size_t>(vertex_marks.value(v));
+  };
+  for (std::size_t head = 0; head < face_queue.size(); ++head) {
+    const auto& f = m.face[face_queue[head]];
+    out.face.push_back({{local(f[0]), local(f[1]), local(f[2])}});
+    for (int v : f)
+      for (int p = m.vertex_face_start[v]; p < m.vertex_face_start[v + 1]; ++p) {
+        const int g = m.vertex_face[p];
+        if (face_marks.is_marked(g)) continue;
+        face_marks.mark(g, 0);
+        const auto& c = m.face[g];
+        const K::Triangle_3 triangle(point(c[0]), point(c[1]), point(c[2]));
+        if (CGAL::squared_distance(s, triangle) <= squared_radius) face_queue.push_back(g);
+      }
+  }
+}
+
+inline void clear(Vertex_marks& face_marks, Vertex_marks& vertex_marks,
+                  std::vector<int>& face_queue, Ball_submesh& out) {
+  out.point.clear();
+  out.face.clear();
+  out.mesh_vertex.clear();
+  face_marks.next_query();
+  vertex_marks.next_query();
+  face_queue.clear();
+}
+
+}  // namespace ball_detail
+
 /// Collects the faces within Euclidean distance `radius` of the source
 /// that are connected to its star (through shared vertices).
 ///
@@ -41,43 +88,31 @@ struct Ball_submesh {
 inline void extract_ball_submesh(const Mesh_arrays& m, int source, double radius,
                                  Vertex_marks& face_marks, Vertex_marks& vertex_marks,
                                  std::vector<int>& face_queue, Ball_submesh& out) {
-  using K = CGAL::Simple_cartesian<double>;
-  auto point = [&](int v) { return K::Point_3(m.point[v][0], m.point[v][1], m.point[v][2]); };
-  const K::Point_3 s = point(source);
-  const double squared_radius = radius * radius;
-
-  out.point.clear();
-  out.face.clear();
-  out.mesh_vertex.clear();
-  face_marks.next_query();
-  vertex_marks.next_query();
-  face_queue.clear();
-  auto local = [&](int v) {
-    if (!vertex_marks.is_marked(v)) {
-      vertex_marks.mark(v, static_cast<int>(out.point.size()));
-      out.point.push_back(m.point[v]);
-      out.mesh_vertex.push_back(v);
-    }
-    return static_cast<std::size_t>(vertex_marks.value(v));
-  };
-  out.source = local(source);
+  ball_detail::clear(face_marks, vertex_marks, face_queue, out);
+  vertex_marks.mark(source, 0);
+  out.point.push_back(m.point[source]);
+  out.mesh_vertex.push_back(source);
+  out.source = 0;
   for (int p = m.vertex_face_start[source]; p < m.vertex_face_start[source + 1]; ++p) {
     face_marks.mark(m.vertex_face[p], 0);
     face_queue.push_back(m.vertex_face[p]);
   }
-  for (std::size_t head = 0; head < face_queue.size(); ++head) {
-    const auto& f = m.face[face_queue[head]];
-    out.face.push_back({{local(f[0]), local(f[1]), local(f[2])}});
-    for (int v : f)
-      for (int p = m.vertex_face_start[v]; p < m.vertex_face_start[v + 1]; ++p) {
-        const int g = m.vertex_face[p];
-        if (face_marks.is_marked(g)) continue;
-        face_marks.mark(g, 0);
-        const auto& c = m.face[g];
-        const K::Triangle_3 triangle(point(c[0]), point(c[1]), point(c[2]));
-        if (CGAL::squared_distance(s, triangle) <= squared_radius) face_queue.push_back(g);
-      }
-  }
+  ball_detail::grow(m, m.point[source], radius, face_marks, vertex_marks, face_queue, out);
+}
+
+/// The same for a source at the point `center` of the face `face` (stored
+/// index): the faces within `radius` of the point connected to that face,
+/// which is `out.face[0]`; `out.source` is its first corner. The argument
+/// above holds as it is.
+inline void extract_ball_submesh_around_point(const Mesh_arrays& m, int face, const Vector3& center,
+                                              double radius, Vertex_marks& face_marks,
+                                              Vertex_marks& vertex_marks,
+                                              std::vector<int>& face_queue, Ball_submesh& out) {
+  ball_detail::clear(face_marks, vertex_marks, face_queue, out);
+  face_marks.mark(face, 0);
+  face_queue.push_back(face);
+  ball_detail::grow(m, center, radius, face_marks, vertex_marks, face_queue, out);
+  out.source = 0;
 }
 
 }  // namespace internal

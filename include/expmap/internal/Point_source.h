@@ -126,6 +126,9 @@ inline Tangent_frame point_tangent_frame(const Mesh_arrays& m, const Point_sourc
 struct Point_ring {
   Source_one_ring ring;
   std::vector<double> distance;  // of each ring vertex from the point
+  /// Whether each ring vertex is in the ring whichever face names the
+  /// point: the corners, and for a point on an edge the apex across it.
+  std::vector<bool> face_independent;
 };
 
 inline Point_ring point_one_ring(const Mesh_arrays& m, const Point_source& p,
@@ -193,6 +196,7 @@ inline Point_ring point_one_ring(const Mesh_arrays& m, const Point_source& p,
     ring.vertex.push_back(entries[i].vertex);
     ring.angle.push_back(entries[i].native);
     out.distance.push_back(entries[i].distance);
+    out.face_independent.push_back(entries[i].reference);
     const double next = i + 1 < entries.size() ? entries[i + 1].native : 2 * M_PI;
     ring.wedge_angle.push_back(next - entries[i].native);
     ring.projected.push_back(frame.angle_of(m.point[entries[i].vertex] - p.position));
