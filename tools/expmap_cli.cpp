@@ -9,6 +9,9 @@
 #include "Batch_table.h"
 #include "Command_line.h"
 #include "Progress_bar.h"
+#ifdef EXPMAP_WITH_VIEWER
+#include "viewer/View_command.h"
+#endif
 
 #include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
@@ -326,7 +329,9 @@ std::string general_help() {
          "                      [options] -o OUT [-o OUT ...]\n"
          "       expmap batch MESH --sources all|I,J,K|@FILE (--radius R | --fraction F |\n"
          "                    --vertices K) [options] -o OUT [-o OUT ...]\n"
+         "       expmap view MESH [--port P] [--host H]\n"
          "       expmap --help | expmap compute --help | expmap batch --help\n"
+         "       expmap view --help\n"
          "       expmap --version\n"
          "\n"
          "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
@@ -336,6 +341,8 @@ std::string general_help() {
          "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
          "  batch     map a patch around each of many sources on all cores and write\n"
          "            them as one CSV or NumPy .npz\n"
+         "  view      serve an interactive view in the web browser: click or drag\n"
+         "            on the surface to place the source, compare two methods\n"
          "\n"
          "exit status: 0 success, 1 runtime error (file, mesh, computation),\n"
          "             2 usage error (options and their values)\n";
@@ -757,6 +764,15 @@ int main(int argc, char** argv) {
       return run_command(rest, expmap_cli::parse_compute_arguments, compute_help, compute);
     if (args[0] == "batch")
       return run_command(rest, expmap_cli::parse_batch_arguments, batch_help, batch);
+    if (args[0] == "view") {
+#ifdef EXPMAP_WITH_VIEWER
+      return expmap_view::run_view_command(rest);
+#else
+      throw Runtime_error(
+          "this expmap was built without the viewer (it needs cpp-httplib and npm: run "
+          "scripts/install-dependencies.sh and configure again)");
+#endif
+    }
     throw Usage_error("unknown command '" + args[0] + "' (see expmap --help)");
   } catch (const Usage_error& e) {
     return fail(e.what(), 2);
