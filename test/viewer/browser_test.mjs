@@ -6,7 +6,7 @@
 //
 // usage: node browser_test.mjs --expmap PROGRAM --mesh MESH --npm-dir DIR --work DIR
 
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
 import { diagonal, frontPoint, get, getJson, launchBrowser, options, startServer } from './browser_session.mjs';
@@ -17,6 +17,22 @@ function check(condition, what) {
   if (condition) ++passes;
   else { ++failures; console.log(`FAIL: ${what}`); }
 }
+
+// The command's own errors: one "expmap: error:" line, status 2 for usage
+// and 1 for what happens at run time.
+for (const [args, status, message] of [
+  [['view'], 2, 'no mesh file given'],
+  [['view', o.mesh, '--port', '70000'], 2, '--port must be at most 65535'],
+  [['view', o.mesh, '--colour', 'red'], 2, "unknown option '--colour'"],
+  [['view', path.join(o.work, 'missing.off')], 1, 'cannot open mesh file'],
+  [['view', o.mesh, '--host', '256.0.0.1', '--port', '0'], 1, 'cannot listen on 256.0.0.1'],
+]) {
+  const r = spawnSync(o.expmap, args, { encoding: 'utf8', timeout: 30000 });
+  check(r.status === status && r.stderr.startsWith('expmap: error: ') && r.stderr.includes(message) &&
+    r.stderr.trim().split('\n').length === 1,
+  `expmap ${args.join(' ')}: status ${status}, '${message}' (got ${r.status}: ${r.stderr.trim()})`);
+}
+check(spawnSync(o.expmap, ['view', '--help'], { encoding: 'utf8' }).stdout.includes('--host H'), 'expmap view --help');
 
 const server = await startServer(o.expmap, o.mesh);
 const browser = await launchBrowser(o['npm-dir']).catch((e) => { server.stop(); throw e; });

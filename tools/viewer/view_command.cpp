@@ -19,6 +19,7 @@
 #include <CGAL/boost/graph/helpers.h>
 
 #include <httplib.h>
+#include <zlib.h>
 
 #include <cstdio>
 #include <exception>
@@ -26,6 +27,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -92,11 +94,61 @@ View_arguments parse_view_arguments(const std::vector<std::string>& args) {
   return a;
 }
 
-// The page's files, read once at start: requests are answered from memory
-// by exact path, so none can reach another file (no "..", no links).
-struct Static_file {
-  std::string content, mime;
+// A response body, with its gzip form when it is worth one (the page's
+// files and the mesh, made once at start).
+struct Body {
+  std::string content, gzip, mime;
 };
+
+// `text` in gzip form, at zlib's default level.
+std::string gzip(const std::string& text) {
+  z_stream z{};
+  if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+    throw std::runtime_error("zlib cannot start compressing");
+  std::string out(deflateBound(&z, static_cast<uLong>(text.size())), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
+  z.avail_in = static_cast<uInt>(text.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = static_cast<uInt>(out.size());
+  const int status = deflate(&z, Z_FINISH);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  if (status != Z_STREAM_END) throw std::runtime_error("zlib could not compress a response");
+  return out;
+}
+
+Body make_body(std::string content, std::string mime) {
+  Body b{std::move(content), "", std::move(mime)};
+  if (b.content.size() > 1024) b.gzip = gzip(b.content);
+  return b;
+}
+
+// Sends `body` as it is, or in gzip form where the client takes it. The
+// body goes out through a content provider of known length, which the HTTP
+// library sends unchanged: left to itself it would compress every text
+// response on every request, with Brotli at its slowest setting (hundreds of
+// milliseconds for a map).
+void send(httplib::Response& res, int status, const std::shared_ptr<const Body>& body,
+          const httplib::Request& req) {
+  res.status = status;
+  const bool zipped = !body->gzip.empty() &&
+                      req.get_header_value("Accept-Encoding").find("gzip") != std::string::npos;
+  const std::string& bytes = zipped ? body->gzip : body->content;
+  if (zipped) res.set_header("Content-Encoding", "gzip");
+  res.set_content_provider(bytes.size(), body->mime,
+                           [body, &bytes](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                             return sink.write(bytes.data() + offset, length);
+                           });
+}
+
+void send_json(httplib::Response& res, int status, std::string json) {
+  res.status = status;
+  auto body = std::make_shared<const std::string>(std::move(json));
+  res.set_content_provider(body->size(), "application/json",
+                           [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+                             return sink.write(body->data() + offset, length);
+                           });
+}
 
 std::string mime_type(const fs::path& path) {
   const std::string ext = path.extension().string();
@@ -123,23 +175,17 @@ fs::path page_folder() {
       "share/expmap/viewer once installed); build the expmap target again");
 }
 
-std::map<std::string, Static_file> read_page(const fs::path& folder) {
-  std::map<std::string, Static_file> files;
+std::map<std::string, std::shared_ptr<const Body>> read_page(const fs::path& folder) {
+  std::map<std::string, std::shared_ptr<const Body>> files;
   for (const auto& entry : fs::recursive_directory_iterator(folder)) {
     if (!entry.is_regular_file()) continue;
     std::ifstream in(entry.path(), std::ios::binary);
     std::ostringstream content;
     content << in.rdbuf();
-    files["/" + fs::relative(entry.path(), folder).generic_string()] = {content.str(),
-                                                                        mime_type(entry.path())};
+    files["/" + fs::relative(entry.path(), folder).generic_string()] =
+        std::make_shared<const Body>(make_body(content.str(), mime_type(entry.path())));
   }
   return files;
-}
-
-
-void send_json(httplib::Response& res, int status, const std::string& body) {
-  res.status = status;
-  res.set_content(body, "application/json");
 }
 
 // Answers `compute()`'s exceptions with the status they stand for.
@@ -201,7 +247,9 @@ int run_view_command(const std::vector<std::string>& args) {
     return 1;
   };
 
-  std::map<std::string, Static_file> page;
+  // The page's files, read once at start: requests are answered from
+  // memory by exact path, so none can reach another file (no "..", no links).
+  std::map<std::string, std::shared_ptr<const Body>> page;
   try {
     page = read_page(page_folder());
   } catch (const std::exception& e) {
@@ -216,7 +264,7 @@ int run_view_command(const std::vector<std::string>& args) {
     return fail("'" + a.mesh + "' has no triangle faces to show");
 
   Map_service service(mesh);
-  const std::string mesh_body = mesh_json(mesh);
+  const auto mesh_body = std::make_shared<const Body>(make_body(mesh_json(mesh), "application/json"));
 
   httplib::Server server;
   // Eight threads: two queries per method (the cache's cap) for two methods
@@ -241,8 +289,8 @@ int run_view_command(const std::vector<std::string>& args) {
     return httplib::Server::HandlerResponse::Handled;
   });
 
-  server.Get("/api/mesh", [&](const httplib::Request&, httplib::Response& res) {
-    send_json(res, 200, mesh_body);
+  server.Get("/api/mesh", [&](const httplib::Request& req, httplib::Response& res) {
+    send(res, 200, mesh_body, req);
   });
   server.Get("/api/status", [&](const httplib::Request&, httplib::Response& res) {
     answer(res, [&] { return status_json(service); });
@@ -261,12 +309,12 @@ int run_view_command(const std::vector<std::string>& args) {
       res.set_content("not found\n", "text/plain; charset=utf-8");
       return;
     }
-    res.set_content(it->second.content, it->second.mime.c_str());
+    send(res, 200, it->second, req);
   });
   // What the library refuses before any handler (a request too long, a
   // method other than GET): a message in the API's form.
   server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
-    if (!res.body.empty()) return;  // the handler's own message
+    if (res.has_header("Content-Type")) return;  // the handler's own message
     if (req.path.rfind("/api/", 0) == 0)
       send_json(res, res.status, error_json("the request was refused (HTTP " + std::to_string(res.status) + ")"));
   });

@@ -55,7 +55,12 @@ async function main() {
   renderer.setPixelRatio(window.devicePixelRatio);
   renderer.setScissorTest(true);
   const camera = new THREE.PerspectiveCamera(35, 1, radius / 100, radius * 100);
-  camera.position.set(center.x, center.y, center.z + 2.8 * radius);
+  // From the outside of the source given in the address (else from +z):
+  // a shared view opens on its decal.
+  const outward = new THREE.Vector3(0, 0, 1);
+  if (state.point && new THREE.Vector3(...state.point).distanceTo(center) > 1e-6 * radius)
+    outward.subVectors(new THREE.Vector3(...state.point), center).normalize();
+  camera.position.copy(center).addScaledVector(outward, 2.8 * radius);
 
   const panes = [0, 1].map(() => new ViewPane(base, mesh.faces, radius / 120));
   const comparing = () => Boolean(state.compare);
@@ -75,7 +80,7 @@ async function main() {
     $('patch-size').value = state.radius || state.fraction;
     $('m').value = state.m ?? '';
     $('m-label').style.display = [state.method, state.compare].includes(heat && heat.name) ? '' : 'none';
-    $('info-1').style.display = comparing() ? '' : 'none';
+    $('info-1').style.display = comparing() ? 'block' : 'none';
   };
 
   const info = (k, lines, error) => {
