@@ -55,6 +55,7 @@ try {
     [`/api/map?point=${v0}&method=dgpc`, 'exactly one of fraction'],
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&radius=1`, 'exactly one of fraction'],
     [`/api/map?point=${v0}&method=nope&fraction=0.02`, "unknown method 'nope'"],
+    ['/api/map?point=-1e308,0,1e308&method=dgpc&fraction=0.02', 'point must be near the mesh'],
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&m=10`, 'applies only to method=heat'],
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&fraction=0.03`, 'more than once'],
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&x=1`, "unknown parameter 'x'"],

@@ -133,6 +133,12 @@ BOOST_AUTO_TEST_CASE(methods_are_checked_by_name) {
         [&] { service.compute({{"point", "0,0,0"}, {"method", m.name}, {"fraction", "0.1"}}); },
         std::string("method ") + m.name + " does not take surface points yet"));
   }
+  BOOST_TEST(throws_with<Bad_request>(
+      [&] { service.compute({{"point", "-1e308,0,1e308"}, {"method", "dgpc"}, {"fraction", "0.1"}}); },
+      "point must be near the mesh"));
+  BOOST_TEST(throws_with<Bad_request>(
+      [&] { service.compute({{"point", "0,0,3"}, {"method", "dgpc"}, {"fraction", "0.1"}}); },
+      "point must be near the mesh"));
   // Nothing was precomputed for the refused requests.
   BOOST_TEST(service.cache().status().empty());
 }

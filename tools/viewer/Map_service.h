@@ -45,10 +45,10 @@ class Map_service {
   ///        the service.
   Map_service(const Mesh& mesh, unsigned queries_per_method = 2, unsigned time_factors_kept = 3)
       : m_mesh(mesh), m_locator(mesh), m_cache(mesh, queries_per_method, time_factors_kept) {
-    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
-    m_limits.max_radius = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                    CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+    m_box = CGAL::Polygon_mesh_processing::bbox(mesh);
+    m_limits.max_radius = std::sqrt(CGAL::square(m_box.xmax() - m_box.xmin()) +
+                                    CGAL::square(m_box.ymax() - m_box.ymin()) +
+                                    CGAL::square(m_box.zmax() - m_box.zmin()));
   }
 
   const Mesh& mesh() const { return m_mesh; }
@@ -70,6 +70,14 @@ class Map_service {
     }
     if (!info->takes_points)
       throw Bad_request(std::string("method ") + info->name + " does not take surface points yet");
+
+    // The page sends points of the surface. Far ones are refused: they mean
+    // nothing, and CGAL's nearest-point search on coordinates near the
+    // largest double fails with a floating-point trap.
+    for (int d = 0; d < 3; ++d)
+      if (request.point[d] < m_box.min(d) - m_limits.max_radius ||
+          request.point[d] > m_box.max(d) + m_limits.max_radius)
+        throw Bad_request("point must be near the mesh: within its bounding box grown by its diagonal");
 
     Map_response r;
     r.method = info->name;
@@ -106,6 +114,7 @@ class Map_service {
   const Mesh& m_mesh;
   expmap::Surface_point_locator<Mesh> m_locator;
   Method_cache m_cache;
+  CGAL::Bbox_3 m_box;
   Request_limits m_limits;
 };
 
