@@ -68,6 +68,28 @@ try {
     try { error = JSON.parse(r.body).error; } catch { /* checked below */ }
     check(r.status === 400 && error.includes(message), `${target}: HTTP 400 with '${message}' (got ${r.status} ${r.body})`);
   }
+  // Random requests from a pool of odd names and values (seeded, so a
+  // failure repeats): each gets a JSON answer, and the server lives on.
+  let seed = 38;
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const pick = (a) => a[Math.floor(random() * a.length)];
+  const names = ['point', 'method', 'fraction', 'radius', 'm', 'x', '', '%00', 'point[]'];
+  const values = ['', '0', '-1', '1e-300', '1e308', 'nan', 'inf', '0.05', '0x10', '%FF%FE', '1,2',
+    '1,2,3', ',,', v0, `${v0},4`, 'dgpc', 'heat', 'DGPC', '%2e%2e%2f', 'a'.repeat(3000)];
+  let oddAnswers = 0;
+  for (let i = 0; i < 150; ++i) {
+    const query = Array.from({ length: 1 + Math.floor(random() * 5) }, () => `${pick(names)}=${pick(values)}`).join('&');
+    const r = await get(port, `/api/map?${query}`);
+    let json = null;
+    try { json = JSON.parse(r.body); } catch { /* counted below */ }
+    if (!json || ![200, 400, 414, 503].includes(r.status) || (r.status !== 200 && typeof json.error !== 'string')) {
+      ++oddAnswers;
+      console.log(`odd answer to /api/map?${query.slice(0, 200)}: ${r.status} ${r.body.slice(0, 200)}`);
+    }
+  }
+  check(oddAnswers === 0, `150 random requests got JSON answers (${oddAnswers} did not)`);
+  check((await get(port, '/api/status')).status === 200, 'the server lives on after them');
+
   // Only the page's own files; requests addressed to other host names refused.
   for (const target of ['/../CMakeLists.txt', '/%2e%2e/%2e%2e/%2e%2e/CMakeLists.txt', '/..%2f..%2fCMakeCache.txt', '/etc/passwd', '/api/nothing']) {
     const r = await get(port, target);
