@@ -16,7 +16,13 @@ packages=(g++ cmake make ccache
           # The Python module, its tests and its Dask layer (python/, test/python/),
           # and the test that loads `expmap batch` .npz output with NumPy.
           python3-dev python3-numpy pybind11-dev python3-pytest python3-distributed
+          # `expmap view`: its web server, and Chromium for the test that
+          # drives its page (tools/viewer, test/viewer).
+          libcpp-httplib-dev chromium
           "$@")
+# The page's npm packages (three.js, playwright-core) need Node.js and npm;
+# a Node.js installed otherwise (with its own npm) is kept.
+command -v node >/dev/null && command -v npm >/dev/null || packages+=(nodejs npm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

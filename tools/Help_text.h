@@ -4,7 +4,8 @@
 #define EXPMAP_TOOLS_HELP_TEXT_H
 
 /// \file Help_text.h
-/// The help texts of `expmap`, `expmap compute` and `expmap batch`.
+/// The help texts of `expmap`, `expmap compute` and `expmap batch`
+/// (`expmap view` has its own, in viewer/).
 
 #include <expmap/Heat_options.h>
 
@@ -22,7 +23,9 @@ inline std::string general_help() {
          "       expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
          "                    (--radius R | --fraction F | --vertices K) [options]\n"
          "                    -o OUT [-o OUT ...]\n"
+         "       expmap view MESH [--port P] [--host H]\n"
          "       expmap --help | expmap compute --help | expmap batch --help\n"
+         "       expmap view --help\n"
          "       expmap --version\n"
          "\n"
          "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
@@ -33,6 +36,8 @@ inline std::string general_help() {
          "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
          "  batch     map a patch around each of many sources on all cores and write\n"
          "            them as one CSV or NumPy .npz\n"
+         "  view      serve an interactive view in the web browser: click or drag\n"
+         "            on the surface to place the source, compare two methods\n"
          "\n"
          "exit status: 0 success, 1 runtime error (file, mesh, computation),\n"
          "             2 usage error (options and their values)\n";

@@ -11,6 +11,9 @@
 #include "Help_text.h"
 #include "Point_sources.h"
 #include "Progress_bar.h"
+#ifdef EXPMAP_WITH_VIEWER
+#include "viewer/View_command.h"
+#endif
 
 #include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
@@ -693,6 +696,15 @@ int main(int argc, char** argv) {
       return run_command(rest, expmap_cli::parse_compute_arguments, compute_help, compute);
     if (args[0] == "batch")
       return run_command(rest, expmap_cli::parse_batch_arguments, batch_help, batch);
+    if (args[0] == "view") {
+#ifdef EXPMAP_WITH_VIEWER
+      return expmap_view::run_view_command(rest);
+#else
+      throw Runtime_error(
+          "this expmap was built without the viewer (it needs cpp-httplib and npm: run "
+          "scripts/install-dependencies.sh and configure again)");
+#endif
+    }
     throw Usage_error("unknown command '" + args[0] + "' (see expmap --help)");
   } catch (const Usage_error& e) {
     return fail(e.what(), 2);

@@ -1,0 +1,178 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_TOOLS_VIEWER_VIEWER_JSON_H
+#define EXPMAP_TOOLS_VIEWER_VIEWER_JSON_H
+
+/// \file Viewer_json.h
+/// The JSON of the viewer's API, written by hand: a few flat objects of
+/// number arrays, where a JSON library would add a dependency and time.
+/// Numbers are written in the shortest form that reads back to the same
+/// double, so a script gets the library's values exactly.
+
+#include "Map_service.h"
+#include "Method_cache.h"
+#include "Viewer_methods.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace expmap_view {
+
+/// Appends JSON values to a string.
+class Json {
+ public:
+  Json& raw(const char* text) {
+    m_text += text;
+    return *this;
+  }
+  Json& number(double x) {
+    if (!std::isfinite(x)) return raw("null");  // JSON has no NaN nor infinity
+    char buffer[32];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+    m_text.append(buffer, end);
+    return *this;
+  }
+  Json& integer(std::size_t n) {
+    char buffer[24];
+    const auto end = std::to_chars(buffer, buffer + sizeof buffer, n).ptr;
+    m_text.append(buffer, end);
+    return *this;
+  }
+  Json& boolean(bool b) { return raw(b ? "true" : "false"); }
+  Json& string(const std::string& s) {
+    m_text += '"';
+    for (const char c : s) {
+      const auto u = static_cast<unsigned char>(c);
+      if (c == '"' || c == '\\') {
+        m_text += '\\';
+        m_text += c;
+      } else if (u < 0x20) {
+        char escaped[8];
+        std::snprintf(escaped, sizeof escaped, "\\u%04x", u);
+        m_text += escaped;
+      } else {
+        m_text += c;
+      }
+    }
+    m_text += '"';
+    return *this;
+  }
+  /// `"name":`, preceded by a comma unless it opens the object.
+  Json& key(const char* name) {
+    if (m_text.back() != '{') m_text += ',';
+    return string(name).raw(":");
+  }
+  template <class Range, class Write>
+  Json& array(const Range& range, Write write) {
+    m_text += '[';
+    bool first = true;
+    for (const auto& x : range) {
+      if (!first) m_text += ',';
+      first = false;
+      write(*this, x);
+    }
+    m_text += ']';
+    return *this;
+  }
+  const std::string& text() const { return m_text; }
+
+ private:
+  std::string m_text;
+};
+
+/// `{"error": message}`.
+inline std::string error_json(const std::string& message) {
+  Json j;
+  j.raw("{").key("error").string(message).raw("}");
+  return j.text();
+}
+
+/// The mesh for drawing: vertex coordinates x0,y0,z0,x1,... and the
+/// corners of each face i0,j0,k0,i1,..., flat.
+inline std::string mesh_json(const Mesh& mesh) {
+  std::vector<double> xyz;
+  xyz.reserve(3 * mesh.number_of_vertices());
+  for (const auto v : mesh.vertices())
+    for (int d = 0; d < 3; ++d) xyz.push_back(CGAL::to_double(mesh.point(v)[d]));
+  std::vector<std::size_t> corners;
+  corners.reserve(3 * mesh.number_of_faces());
+  for (const auto f : mesh.faces())
+    for (const auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      corners.push_back(static_cast<std::size_t>(v));
+  Json j;
+  j.raw("{").key("vertex_count").integer(mesh.number_of_vertices());
+  j.key("face_count").integer(mesh.number_of_faces());
+  j.key("vertices").array(xyz, [](Json& o, double x) { o.number(x); });
+  j.key("faces").array(corners, [](Json& o, std::size_t i) { o.integer(i); });
+  j.raw("}");
+  return j.text();
+}
+
+/// A map: the patch vertices (mesh indices, nearest first) with r, theta,
+/// u, v; the flipped faces, the fold-free radius, the query time, and the
+/// source as located.
+inline std::string map_json(const Map_response& r) {
+  const Map& map = r.map;
+  std::vector<double> u(map.size()), v(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const auto uv = map.uv(i);
+    u[i] = uv[0];
+    v[i] = uv[1];
+  }
+  const auto num = [](Json& o, double x) { o.number(x); };
+  const auto index = [](Json& o, std::size_t i) { o.integer(i); };
+  Json j;
+  j.raw("{").key("method").string(r.method);
+  if (r.time_factor > 0) j.key("m").number(r.time_factor);
+  j.key("source").raw("{").key("face").integer(static_cast<std::size_t>(r.source.face));
+  j.key("barycentric").array(r.source.barycentric, num);
+  j.key("position").array(r.position, num);
+  j.key("nearest_vertex").integer(static_cast<std::size_t>(map.source)).raw("}");
+  j.key("vertices").array(map.indices, index);
+  j.key("r").array(map.distance, num);
+  j.key("theta").array(map.angle, num);
+  j.key("u").array(u, num);
+  j.key("v").array(v, num);
+  j.key("triangles").integer(r.triangles);
+  j.key("flipped").integer(r.flipped_faces.size());
+  j.key("flipped_faces").array(r.flipped_faces, index);
+  j.key("fold_free_radius").number(map.fold_free_radius.value_or(0.0));
+  j.key("query_ms").number(r.query_ms);
+  j.raw("}");
+  return j.text();
+}
+
+/// The methods (and which take surface points), the request limits, and
+/// every precomputation so far with its state: the page polls it to show
+/// progress.
+inline std::string status_json(const Map_service& service) {
+  Json j;
+  j.raw("{").key("methods").array(viewer_methods(), [](Json& o, const Method_info& m) {
+    o.raw("{").key("name").string(m.name).key("label").string(m.label);
+    o.key("takes_points").boolean(m.takes_points).key("takes_time_factor").boolean(m.takes_time_factor);
+    if (m.takes_time_factor) o.key("default_m").number(default_time_factor());
+    o.raw("}");
+  });
+  const Request_limits& l = service.limits();
+  j.key("limits").raw("{").key("max_fraction").number(l.max_fraction);
+  j.key("max_radius").number(l.max_radius).key("min_m").number(l.min_time_factor);
+  j.key("max_m").number(l.max_time_factor).raw("}");
+  j.key("precomputations").array(service.cache().status(), [](Json& o, const Precomputation_status& s) {
+    using State = Precomputation_status::State;
+    o.raw("{").key("method").string(s.method);
+    if (s.time_factor > 0) o.key("m").number(s.time_factor);
+    o.key("state").string(s.state == State::running ? "running" : s.state == State::ready ? "ready" : "failed");
+    o.key("seconds").number(s.seconds);
+    if (s.state == State::failed) o.key("error").string(s.error);
+    o.raw("}");
+  });
+  j.raw("}");
+  return j.text();
+}
+
+}  // namespace expmap_view
+
+#endif  // EXPMAP_TOOLS_VIEWER_VIEWER_JSON_H

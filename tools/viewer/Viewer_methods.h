@@ -1,0 +1,130 @@
+// Copyright (c) 2026 expmap contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef EXPMAP_TOOLS_VIEWER_VIEWER_METHODS_H
+#define EXPMAP_TOOLS_VIEWER_VIEWER_METHODS_H
+
+/// \file Viewer_methods.h
+/// The methods the viewer offers, behind one interface: a map from a
+/// surface point. The table is the one place that knows them.
+
+#include <expmap/Discrete_exponential_map.h>
+#include <expmap/Exact_exponential_map.h>
+#include <expmap/Geodesic_polar_coordinates.h>
+#include <expmap/Heat_exponential_map.h>
+#include <expmap/Local_map.h>
+#include <expmap/Patch.h>
+#include <expmap/Surface_point.h>
+#include <expmap/internal/Point_source.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace expmap_view {
+
+using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+using Map = expmap::Local_map<Mesh::Vertex_index>;
+using Point_on_surface = expmap::Surface_point<Mesh::Face_index>;
+
+/// Whether `Method` maps from points inside faces: it has the
+/// `compute_at_point()` that `Method_front::compute(Surface_point, ...)`
+/// calls. The viewer places sources anywhere on the surface, so a method
+/// without it answers HTTP 400 ("does not take surface points yet") instead
+/// of a map from the nearest vertex that would not follow the pointer.
+template <class Method, class = void>
+struct takes_surface_points : std::false_type {};
+template <class Method>
+struct takes_surface_points<
+    Method, std::void_t<decltype(std::declval<const Method&>().compute_at_point(
+                std::declval<const expmap::internal::Point_source&>(),
+                std::declval<const expmap::Patch&>(),
+                std::declval<const typename Method::Query&>()))>> : std::true_type {};
+
+/// A precomputed method, as the viewer uses it. Queries are thread safe.
+class Viewer_method {
+ public:
+  virtual ~Viewer_method() = default;
+  /// The map around `source` (its fold-free radius filled).
+  virtual Map compute(const Point_on_surface& source, const expmap::Patch& patch) const = 0;
+};
+
+/// `Viewer_method` for a method class of the library.
+template <class Method>
+class Viewer_method_model final : public Viewer_method {
+ public:
+  template <class... Args>
+  explicit Viewer_method_model(Args&&... args) : m_method(std::forward<Args>(args)...) {}
+
+  Map compute(const Point_on_surface& source, const expmap::Patch& patch) const override {
+    expmap::Query_options shared;
+    shared.find_fold_free_radius = true;
+    const typename Method::Query query(shared);
+    if constexpr (takes_surface_points<Method>::value) {
+      return m_method.compute(source, patch, query);
+    } else {
+      // The server asks `Method_info::takes_points` before precomputing.
+      throw expmap::Invalid_input("this method does not take surface points yet");
+    }
+  }
+
+ private:
+  Method m_method;
+};
+
+/// One row of the viewer's method table.
+struct Method_info {
+  const char* name;   ///< as in the URL and the API: heat, dem, dgpc, exact
+  const char* label;  ///< for the page
+  bool takes_points;  ///< `takes_surface_points` of its class
+  bool takes_time_factor;  ///< heat's m
+  /// Precomputes the method on `mesh` (which must outlive it); `time_factor`
+  /// is used only where `takes_time_factor`.
+  std::unique_ptr<Viewer_method> (*make)(const Mesh& mesh, double time_factor);
+};
+
+namespace internal {
+template <class Method>
+std::unique_ptr<Viewer_method> make_method(const Mesh& mesh, double) {
+  return std::make_unique<Viewer_method_model<Method>>(mesh);
+}
+inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_factor) {
+  expmap::Heat_options options;
+  options.time_factor = time_factor;
+  return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
+}
+template <class Method>
+constexpr Method_info row(const char* name, const char* label) {
+  return {name, label, takes_surface_points<Method>::value, false, make_method<Method>};
+}
+}  // namespace internal
+
+/// The methods, in the order the page lists them.
+inline const std::vector<Method_info>& viewer_methods() {
+  static const std::vector<Method_info> table{
+      {"heat", "heat method", takes_surface_points<expmap::Heat_exponential_map<Mesh>>::value, true,
+       internal::make_heat},
+      internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM"),
+      internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC"),
+      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact"),
+  };
+  return table;
+}
+
+/// The method called `name`, or nullptr.
+inline const Method_info* find_method(const std::string& name) {
+  for (const Method_info& m : viewer_methods())
+    if (name == m.name) return &m;
+  return nullptr;
+}
+
+/// The default time factor of the heat method.
+inline double default_time_factor() { return expmap::Heat_options().time_factor; }
+
+}  // namespace expmap_view
+
+#endif  // EXPMAP_TOOLS_VIEWER_VIEWER_METHODS_H
