@@ -7,7 +7,7 @@
 //
 // Without a position, the centre of the mesh's bounding box is taken: the
 // decal goes where the surface is nearest to it.
-#include <expmap/Geodesic_polar_coordinates.h>
+#include <expmap/Heat_exponential_map.h>
 #include <expmap/IO/write_textured_obj.h>
 #include <expmap/Locate_surface_point.h>
 
@@ -23,9 +23,9 @@
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
-// The method: any class whose compute() takes a Surface_point, e.g.
-// expmap::Heat_exponential_map<Mesh> where it maps from points.
-using Method = expmap::Geodesic_polar_coordinates<Mesh>;
+// Any of the four methods maps from a Surface_point, e.g.
+// expmap::Geodesic_polar_coordinates<Mesh> (DGPC).
+using Method = expmap::Heat_exponential_map<Mesh>;
 
 int main(int argc, char** argv) {
   const char* file = argc > 1 ? argv[1] : "data/meshes/armadillo.off";
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     const Method method(mesh);
     const expmap::Surface_point_locator<Mesh> locator(mesh);
     const auto point = locator.locate(position);
-    expmap::Query_options query;
+    Method::Query query;
     query.reference_direction = std::array<double, 3>{{0, 1, 0}};  // decal "up" = world y
     const auto map = method.compute(point, expmap::Patch::geodesic_radius(radius), query);
     std::ofstream obj(out);
