@@ -10,6 +10,7 @@
 
 #include "Command_line.h"
 
+#include <expmap/Errors.h>
 #include <expmap/IO/Input_faces.h>
 #include <expmap/Locate_surface_point.h>
 #include <expmap/Surface_point.h>
@@ -85,6 +86,8 @@ class Point_sources {
   /// The surface points nearest to `positions`. Positions farther from the
   /// surface than 1e-6 of the bounding box's diagonal get one note on
   /// stderr (`what` names them) saying how far the farthest is.
+  /// \throws expmap::Invalid_input, naming `what` and the point, for a
+  ///         point too far from the mesh to locate.
   std::vector<Surface_point> locate(const std::vector<std::array<double, 3>>& positions,
                                     const std::string& what) {
     if (!m_locator) m_locator = std::make_unique<expmap::Surface_point_locator<Mesh>>(m_mesh);
@@ -96,7 +99,14 @@ class Point_sources {
     std::size_t off = 0;
     double farthest = 0;
     for (const auto& x : positions) {
-      points.push_back(m_locator->locate(x));
+      try {
+        points.push_back(m_locator->locate(x));
+      } catch (const expmap::Invalid_input& e) {
+        const std::string which =
+            positions.size() == 1 ? std::string()
+                                  : "source " + std::to_string(points.size()) + ": ";
+        throw expmap::Invalid_input(what + ": " + which + e.what());
+      }
       const std::array<double, 3> y = position(points.back());
       const double d = std::sqrt(CGAL::square(x[0] - y[0]) + CGAL::square(x[1] - y[1]) +
                                  CGAL::square(x[2] - y[2]));

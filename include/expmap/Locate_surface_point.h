@@ -6,17 +6,23 @@
 /// \file Locate_surface_point.h
 /// The surface point nearest to a point of space, by CGAL's AABB tree.
 
+#include <expmap/Errors.h>
 #include <expmap/Surface_point.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/locate.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <sstream>
+#include <string>
 
 namespace expmap {
 
@@ -40,8 +46,23 @@ class Surface_point_locator {
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
   using Kernel = typename CGAL::Kernel_traits<Point_3>::Kernel;
 
+  /// How far from the mesh's bounding box, in multiples of its largest
+  /// side, a point may be and still be located.
+  static constexpr double max_relative_distance = 1e8;
+
   /// Builds the tree of the faces of `tm`.
+  /// \throws Invalid_input if `tm` has no face or a vertex with a
+  ///         coordinate that is not finite.
   explicit Surface_point_locator(const TriangleMesh& tm) : m_tm(tm) {
+    if (faces(tm).empty()) throw Invalid_input("cannot locate points on a mesh without faces");
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
+    for (int k = 0; k < 3; ++k) {
+      m_low[k] = box.min(k);
+      m_high[k] = box.max(k);
+      m_size = std::max(m_size, m_high[k] - m_low[k]);
+    }
+    if (!std::isfinite(m_size))
+      throw Invalid_input("cannot locate points on a mesh with coordinates that are not finite");
     CGAL::Polygon_mesh_processing::build_AABB_tree(tm, m_tree);
   }
 
@@ -51,7 +72,10 @@ class Surface_point_locator {
   /// location (a point at a vertex comes back as 1, 0, 1e-16, say): they
   /// are set to 0 and the others rescaled, so that a point at a vertex's
   /// position is that vertex, and one on an edge is on the edge, exactly.
+  /// \throws Invalid_input if a coordinate of `xyz` is not finite or `xyz`
+  ///         is farther from the mesh than the class's bound.
   Surface_point<face_descriptor> locate(const std::array<double, 3>& xyz) const {
+    check_near_enough(xyz);
     const auto location = CGAL::Polygon_mesh_processing::locate_with_AABB_tree(
         Point_3(xyz[0], xyz[1], xyz[2]), m_tree, m_tm);
     Surface_point<face_descriptor> point;
@@ -67,15 +91,38 @@ class Surface_point_locator {
   }
 
  private:
+  void check_near_enough(const std::array<double, 3>& xyz) const {
+    std::ostringstream point;
+    point << "the point (" << xyz[0] << ", " << xyz[1] << ", " << xyz[2] << ")";
+    double outside = 0;  // the largest distance from the box along an axis
+    for (int k = 0; k < 3; ++k) {
+      if (!std::isfinite(xyz[k]))
+        throw Invalid_input(point.str() + " has a coordinate that is not finite");
+      // Differences of finite numbers may overflow to infinity: that is
+      // too far, as it should be.
+      outside = std::max({outside, m_low[k] - xyz[k], xyz[k] - m_high[k]});
+    }
+    if (outside > max_relative_distance * m_size) {
+      std::ostringstream message;
+      message << point.str() << " is too far from the mesh to locate its nearest surface point: "
+              << "at least " << outside << " from the mesh's bounding box, more than "
+              << max_relative_distance << " times the mesh's size " << m_size;
+      throw Invalid_input(message.str());
+    }
+  }
+
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh>;
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
   const TriangleMesh& m_tm;
+  std::array<double, 3> m_low{}, m_high{};  // the bounding box
+  double m_size = 0;                        // its largest side
   Tree m_tree;
 };
 
 /// \ingroup PkgExpmapRef
 /// The surface point of `tm` nearest to `xyz`. Builds an AABB tree on every
 /// call: for many points use one `Surface_point_locator`.
+/// \throws Invalid_input as the locator's constructor and `locate()` do.
 template <class TriangleMesh>
 Surface_point<typename boost::graph_traits<TriangleMesh>::face_descriptor> locate_surface_point(
     const TriangleMesh& tm, const std::array<double, 3>& xyz) {

@@ -5,7 +5,15 @@
 #include <expmap/Locate_surface_point.h>
 #include <expmap/Surface_point.h>
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
 
 #include "surface_point_fixtures.h"
 
@@ -30,6 +38,48 @@ BOOST_AUTO_TEST_CASE(locator_finds_the_face_and_coordinates) {
   const Point_source once = expmap::locate_surface_point(mesh, {{0, 0, 2}});
   const auto x = position(mesh, once);
   BOOST_TEST(x[2] > 0.99);  // nearest the north pole
+}
+
+// Points with a coordinate that is not finite, or so far away that the
+// nearest-point search would overflow (CGAL's search traps on elephant's
+// {-1e308, 0, 1e308}), are refused with a message; points far out but
+// within the bound are still located.
+BOOST_AUTO_TEST_CASE(locator_refuses_points_it_cannot_locate) {
+  const auto mesh = load_mesh<Surface_mesh>("elephant.off");
+  const expmap::Surface_point_locator<Surface_mesh> locator(mesh);
+  const auto refused = [&](const std::array<double, 3>& xyz, const std::string& text) {
+    try {
+      locator.locate(xyz);
+    } catch (const expmap::Invalid_input& e) {
+      BOOST_TEST_MESSAGE(e.what());
+      return std::string(e.what()).find(text) != std::string::npos;
+    }
+    return false;
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  BOOST_TEST(refused({{-1e308, 0, 1e308}}, "the point (-1e+308, 0, 1e+308) is too far from the mesh"));
+  BOOST_TEST(refused({{1e200, 0, 0}}, "too far from the mesh"));
+  BOOST_TEST(refused({{0, 0, std::nan("")}}, "has a coordinate that is not finite"));
+  BOOST_TEST(refused({{-inf, 0, 0}}, "has a coordinate that is not finite"));
+  BOOST_TEST(refused({{0, 0, -std::numeric_limits<double>::max()}}, "too far from the mesh"));
+  BOOST_CHECK_THROW(expmap::locate_surface_point(mesh, {{1e308, 1e308, 1e308}}), expmap::Invalid_input);
+
+  // The bound: 1e8 times the bounding box's largest side, from the box.
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  double size = 0;
+  for (int k = 0; k < 3; ++k) size = std::max(size, box.max(k) - box.min(k));
+  const double bound = expmap::Surface_point_locator<Surface_mesh>::max_relative_distance * size;
+  BOOST_TEST(refused({{box.xmax() + 1.01 * bound, 0, 0}}, "too far from the mesh"));
+  // Within it, the nearest point far out along +x is a point of largest x.
+  const Point_source near = locator.locate({{box.xmax() + 0.99 * bound, 0, 0}});
+  BOOST_TEST(position(mesh, near)[0] > box.xmax() - 1e-6 * size);
+}
+
+// A mesh without faces has no point to locate.
+BOOST_AUTO_TEST_CASE(locator_refuses_a_mesh_without_faces) {
+  Surface_mesh empty;
+  empty.add_vertex(Surface_mesh::Point(0, 0, 0));
+  BOOST_CHECK_THROW(expmap::Surface_point_locator<Surface_mesh>{empty}, expmap::Invalid_input);
 }
 
 BOOST_AUTO_TEST_CASE(dgpc_corner_is_the_vertex) {
