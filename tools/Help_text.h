@@ -131,8 +131,7 @@ inline std::string compute_help(const std::string& method_list) {
          "                       1,0,0 is the first corner\n"
          "                       A point that is no vertex has no row at r = 0, the\n"
          "                       nearest corner counts as the map's source, and\n"
-         "                       --vertices and --fraction count vertices only.\n"
-         "                       Not all methods map from points (an error says so).\n" +
+         "                       --vertices and --fraction count vertices only.\n" +
          map_options_help(method_list) +
          "output (at least one, format by extension; may repeat):\n"
          "  -o, --output OUT     .csv  header vertex,r,theta,u,v; one row per patch\n"

@@ -29,7 +29,6 @@
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Surface_point.h>
-#include <expmap/internal/Has_compute_at_point.h>
 #include <expmap/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -47,7 +46,6 @@
 #include <sstream>
 #include <string>
 #include <thread>
-#include <type_traits>
 #include <variant>
 #include <vector>
 
@@ -73,18 +71,6 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The map from a vertex or, for a method that maps from points,
-// a point (`checked_method()` refuses points for the others).
-template <class Method_class, class Vertex_or_point, class Query>
-Map compute_from(const Method_class& method, const Vertex_or_point& source,
-                 const expmap::Patch& patch, const Query& query) {
-  if constexpr (std::is_same_v<Vertex_or_point, Surface_point> &&
-                !expmap::internal::has_compute_at_point_v<Method_class>)
-    throw Usage_error("this method does not map from points of faces");
-  else
-    return method.compute(source, patch, query);
-}
-
 // Precomputes with `make()` and answers one query, timing both: the two
 // numbers a user of a precompute-once method cares about.
 template <class Make, class Query>
@@ -94,7 +80,7 @@ Run timed_run(Make make, const Source& source, const expmap::Patch& patch, const
   const auto method = make();
   run.precompute_seconds = seconds_since(start);
   start = std::chrono::steady_clock::now();
-  run.map = std::visit([&](const auto& s) { return compute_from(method, s, patch, query); },
+  run.map = std::visit([&](const auto& s) { return method.compute(s, patch, query); },
                        source);
   run.query_seconds = seconds_since(start);
   return run;
@@ -270,7 +256,7 @@ struct Batch_sources {
   std::size_t size() const { return points.empty() ? vertices.size() : points.size(); }
 };
 
-// The maps of `sources[first, first + count)`, as `compute_from()`.
+// The maps of `sources[first, first + count)`, from vertices or points.
 template <class Method_class, class Query>
 expmap::Batch_result<Mesh::Vertex_index> compute_part(const Method_class& method,
                                                       const Batch_sources& sources,
@@ -282,13 +268,10 @@ expmap::Batch_result<Mesh::Vertex_index> compute_part(const Method_class& method
     return method.compute_many_by_index(
         {sources.vertices.begin() + first, sources.vertices.begin() + first + count}, patch,
         options, query);
-  if constexpr (expmap::internal::has_compute_at_point_v<Method_class>)
-    return method.compute_many(
-        std::vector<Surface_point>(sources.points.begin() + first,
-                                   sources.points.begin() + first + count),
-        patch, options, query);
-  else
-    throw Usage_error("this method does not map from points of faces");
+  return method.compute_many(
+      std::vector<Surface_point>(sources.points.begin() + first,
+                                 sources.points.begin() + first + count),
+      patch, options, query);
 }
 
 // Precomputes and maps every source, a chunk of sources at a time: a chunk
@@ -338,7 +321,6 @@ struct Method {
   const char* summary;      // for --help
   const char* description;  // for the summary and the SVG caption (heat adds its settings)
   bool takes_heat_options;  // --time-factor, --laplacian, --angles and the like
-  bool maps_from_points;    // takes --source-point, --source-face and --source-points
   Run (*run)(const Mesh&, const Compute_arguments&, const Source&, const expmap::Patch&,
              const expmap::Query_options&);
   Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const Batch_sources&,
@@ -352,7 +334,6 @@ constexpr Method method_row(const char* name, const char* summary, const char* d
           summary,
           description,
           takes_heat_options,
-          expmap::internal::has_compute_at_point_v<Method_class>,
           run_one<Method_class>,
           run_many<Method_class>};
 }
@@ -491,8 +472,6 @@ const Method& checked_method(const Compute_arguments& a) {
         "--time-factor, --laplacian, --vertex-area, "
         "--factor-precision, --query-threads, --angles and --near-source-blend apply only to "
         "--method heat");
-  if (!a.point_option.empty() && !method.maps_from_points)
-    throw Usage_error(a.point_option + " is not supported by method " + method.name);
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))

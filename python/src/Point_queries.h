@@ -13,7 +13,6 @@
 #include "Map_arrays.h"
 
 #include <expmap/Batch.h>
-#include <expmap/internal/Has_compute_at_point.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -33,17 +32,6 @@ template <class Method>
 const Face_points& face_points(const Bound_method<Method>& b) {
   if (!b.points) b.points = std::make_unique<const Face_points>(*b.mesh, b.original, b.faces);
   return *b.points;
-}
-
-/// Raises NotImplementedError for a method class without point sources.
-template <class Method>
-void check_maps_from_points(const std::string& class_name, const char* function) {
-  if constexpr (!expmap::internal::has_compute_at_point_v<Method>) {
-    const std::string message = class_name + "." + function + "() is not supported: " +
-                                class_name + " does not map from points of faces";
-    PyErr_SetString(PyExc_NotImplementedError, message.c_str());
-    throw py::error_already_set();
-  }
 }
 
 /// Points of space: an array of shape (k, 3), or (3,) for one point (then
@@ -89,10 +77,7 @@ std::size_t nearest_corner(const Mesh& mesh, const Surface_point& p) {
 template <class Method>
 Map compute_from_point(const Bound_method<Method>& b, const Surface_point& p,
                        const expmap::Patch& patch, const typename Method::Query& query) {
-  if constexpr (expmap::internal::has_compute_at_point_v<Method>)
-    return b.method->compute(p, mesh_patch(b, nearest_corner(*b.mesh, p), patch), query);
-  else
-    throw expmap::Invalid_input("this method does not map from points of faces");
+  return b.method->compute(p, mesh_patch(b, nearest_corner(*b.mesh, p), patch), query);
 }
 
 /// The keywords every point query shares with compute().
@@ -111,7 +96,6 @@ const char* const point_doc =
 template <class Method>
 void add_point_queries(py::class_<Bound_method<Method>>& c) {
   using Bound = Bound_method<Method>;
-  const std::string name = c.attr("__name__").template cast<std::string>();
   c.def(
       "locate",
       [](const Bound& b, py::handle points_object) {
@@ -144,14 +128,14 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
       "that corner exactly). One point (3 numbers) gives (int, 3 floats). An AABB\n"
       "tree of the faces is built on the first point query, O(F log F), then each\n"
       "point costs about O(log F), without the GIL. Raises ValueError for a bad\n"
-      "array.");
+      "array or a point too far from the mesh to locate: more than 1e8 times the\n"
+      "mesh's size (the largest side of its bounding box) from that box.");
   c.def(
       "compute_at",
-      [name](const Bound& b, py::handle face, py::handle barycentric,
+      [](const Bound& b, py::handle face, py::handle barycentric,
              std::optional<double> radius, std::optional<double> fraction, py::object vertices,
              py::object vertex_set, py::handle reference, bool trim_folds,
              const py::kwargs& settings) {
-        check_maps_from_points<Method>(name, "compute_at");
         const std::size_t f = index_argument(face, "face");
         const std::array<double, 3> w = barycentric_argument(barycentric);
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
@@ -174,15 +158,13 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
                    "negative, rescaled to sum 1) of that row's corners, in its order. ") +
        point_doc + patch_doc +
        "\nTakes the query settings compute() takes. Raises ValueError for a face out\n"
-       "of range, bad coordinates or a bad patch, and NotImplementedError for a\n"
-       "method that does not map from points.")
+       "of range, bad coordinates or a bad patch.")
           .c_str());
   c.def(
       "compute_at_point",
-      [name](const Bound& b, py::handle point, std::optional<double> radius,
+      [](const Bound& b, py::handle point, std::optional<double> radius,
              std::optional<double> fraction, py::object vertices, py::object vertex_set,
              py::handle reference, bool trim_folds, const py::kwargs& settings) {
-        check_maps_from_points<Method>(name, "compute_at_point");
         bool single = false;
         const Real_array xyz = points_argument(point, "point", single);
         if (!single) throw expmap::Invalid_input("point must be 3 numbers (use compute_many_at_points)");
@@ -205,16 +187,15 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
                    "As compute_at() from the surface point nearest to ``point`` (3 numbers;\n"
                    "see locate()). ") +
        point_doc + patch_doc +
-       "\nRaises ValueError for a bad point or patch, NotImplementedError for a\n"
-       "method that does not map from points.")
+       "\nRaises ValueError for a bad point (not finite, or too far from the mesh;\n"
+       "see locate()) or a bad patch.")
           .c_str());
   c.def(
       "compute_many_at_points",
-      [name](const Bound& b, py::handle points_object, std::optional<double> radius,
+      [](const Bound& b, py::handle points_object, std::optional<double> radius,
              std::optional<double> fraction, py::object vertices, py::object vertex_set,
              py::handle reference, py::handle threads_object, bool trim_folds,
              const py::kwargs& settings) {
-        check_maps_from_points<Method>(name, "compute_many_at_points");
         bool single = false;
         const Real_array points = points_argument(points_object, "points", single);
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
@@ -254,8 +235,7 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
                    "(0 to k - 1). ") +
        patch_doc +
        "\nA query that fails costs only its own map (see compute_many()). Raises\n"
-       "ValueError for bad points or a bad patch, NotImplementedError for a method\n"
-       "that does not map from points.")
+       "ValueError for a bad point (see locate()) or a bad patch.")
           .c_str());
 }
 

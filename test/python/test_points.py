@@ -101,22 +101,35 @@ def test_many_points_equal_single_queries(elephant, dgpc, threads):
 
 
 @pytest.mark.parametrize("method", ALL_METHODS)
-def test_every_method_maps_from_points_or_says_it_does_not(cactus, method):
+def test_every_method_maps_from_points(cactus, method):
     _, V, F = cactus
     mapper = method(V, F)
-    face, w = mapper.locate(V[F[7]].mean(axis=0))  # locating needs no method
+    centre = V[F[7]].mean(axis=0)
+    face, w = mapper.locate(centre)
     assert face == 7
     np.testing.assert_allclose(w, [1 / 3] * 3, atol=1e-12)
-    calls = [lambda: mapper.compute_at(7, [0.2, 0.3, 0.5], vertices=10),
-             lambda: mapper.compute_at_point(V[F[7]].mean(axis=0), vertices=10),
-             lambda: mapper.compute_many_at_points(V[F[:3]].mean(axis=1), vertices=10)]
-    for call in calls:
-        try:
-            result = call()
-        except NotImplementedError as e:
-            assert "does not map from points of faces" in str(e)
-        else:
-            assert len(result) in (3, 10)
+    at = mapper.compute_at(7, [1, 1, 1], vertices=10)
+    at_point = mapper.compute_at_point(centre, vertices=10)
+    batch = mapper.compute_many_at_points(V[F[:3]].mean(axis=1), vertices=10)
+    assert batch.failures == 0 and len(batch) == 3
+    for m in (at, at_point, *batch):
+        assert len(m.vertices) == 10
+        assert m.r.min() > 0  # no vertex at the point
+        assert np.isfinite(m.r).all() and np.isfinite(m.theta).all()
+    assert np.isfinite(at.uv).all() and np.isfinite(at_point.uv).all()
+    # The face's centre, given by its coordinates or by its position.
+    np.testing.assert_array_equal(at_point.vertices, at.vertices)
+    np.testing.assert_allclose(at_point.r, at.r, rtol=0, atol=1e-9)
+    # The corners are reached straight across the face: r is their distance
+    # (heat's is smoothed: up to 4% off on other faces of cactus).
+    corners = np.isin(at.vertices, F[7])
+    assert corners.sum() == 3
+    np.testing.assert_allclose(at.r[corners], np.linalg.norm(V[at.vertices[corners]] - centre, axis=1),
+                               rtol=0.1 if method is expmap.HeatExponentialMap else 1e-12)
+    # Each map of the batch is that point's single query.
+    single = mapper.compute_at_point(V[F[2]].mean(axis=0), vertices=10)
+    np.testing.assert_array_equal(batch[2].vertices, single.vertices)
+    np.testing.assert_array_equal(batch[2].r, single.r)
 
 
 def test_bad_points_raise_value_error(elephant, dgpc):
@@ -139,6 +152,17 @@ def test_bad_points_raise_value_error(elephant, dgpc):
         lambda: dgpc.locate(np.zeros((2, 2))),
         lambda: dgpc.locate([[0, 0, np.nan]]),
     ]
+    # Too far from the mesh to locate (more than 1e8 times its size): the
+    # nearest-point search would overflow.
+    far_calls = [
+        lambda: dgpc.locate([-1e308, 0, 1e308]),
+        lambda: dgpc.locate([[0, 0, 0], [1e9, 0, 0]]),
+        lambda: dgpc.compute_at_point([-1e308, 0, 1e308], vertices=5),
+        lambda: dgpc.compute_many_at_points([[0, 0, 0], [0, -1e200, 0]], vertices=5),
+    ]
+    for call in far_calls:
+        with pytest.raises(ValueError, match="too far from the mesh"):
+            call()
     for call in bad_calls:
         with pytest.raises(ValueError):
             call()

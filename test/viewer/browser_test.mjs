@@ -42,8 +42,8 @@ try {
   const { json: status } = await getJson(port, '/api/status');
   check(mesh.vertices.length === 3 * mesh.vertex_count && mesh.faces.length === 3 * mesh.face_count,
     '/api/mesh gives three coordinates per vertex and three corners per face');
-  const dgpc = status.methods.find((m) => m.name === 'dgpc');
-  check(dgpc && dgpc.takes_points, '/api/status lists dgpc as taking surface points');
+  const methodNames = status.methods.map((m) => m.name).join(',');
+  check(methodNames === 'heat,dem,dgpc,exact', `/api/status lists the four methods (got ${methodNames})`);
 
   // Bad requests: HTTP 400 with a message, nothing else.
   const v0 = mesh.vertices.slice(0, 3).join(',');
@@ -60,14 +60,28 @@ try {
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&fraction=0.03`, 'more than once'],
     [`/api/map?point=${v0}&method=dgpc&fraction=0.02&x=1`, "unknown parameter 'x'"],
   ];
-  for (const m of status.methods.filter((m) => !m.takes_points))
-    bad.push([`/api/map?point=${v0}&method=${m.name}&fraction=0.02`, 'does not take surface points yet']);
   for (const [target, message] of bad) {
     const r = await get(port, target);
     let error = '';
     try { error = JSON.parse(r.body).error; } catch { /* checked below */ }
     check(r.status === 400 && error.includes(message), `${target}: HTTP 400 with '${message}' (got ${r.status} ${r.body})`);
   }
+  // Every method maps from a point inside a face: no row at r = 0. A first
+  // request waits (HTTP 503) while the method is precomputed.
+  const inFace = frontPoint(mesh).point;
+  for (const m of status.methods) {
+    let r = null;
+    for (let tries = 0; tries < 300 && (!r || r.status === 503); ++tries) {
+      if (r) await new Promise((resolve) => setTimeout(resolve, 200));
+      r = await get(port, `/api/map?point=${inFace.join(',')}&method=${m.name}&fraction=0.02`);
+    }
+    let map = null;
+    try { map = JSON.parse(r.body); } catch { /* checked below */ }
+    check(r.status === 200 && map.method === m.name && map.vertices.length > 10 &&
+      map.r.every((x) => Number.isFinite(x) && x > 0) && map.theta.every(Number.isFinite),
+    `/api/map maps from a point inside a face with ${m.name} (got ${r.status} ${r.body.slice(0, 200)})`);
+  }
+
   // Random requests from a pool of odd names and values (seeded, so a
   // failure repeats): each gets a JSON answer, and the server lives on.
   let seed = 38;

@@ -1,7 +1,7 @@
 // The server side of `expmap view` without HTTP: requests are checked before
-// any work, a map from a point of a plane is the plane's exact map, methods
-// without surface points are refused by name, precomputations happen once,
-// and queries per method are capped. (test/viewer/browser_test.mjs drives the
+// any work, a map from a point of a plane is the plane's exact map, every
+// method maps from points and unknown ones are refused by name,
+// precomputations happen once, and queries per method are capped. (test/viewer/browser_test.mjs drives the
 // server itself and the page in Chromium.)
 #include "Map_service.h"
 #include "Viewer_json.h"
@@ -10,6 +10,8 @@
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <string>
@@ -40,9 +42,6 @@ Mesh planar_grid() {
 }
 
 }  // namespace
-
-static_assert(takes_surface_points<expmap::Geodesic_polar_coordinates<Mesh>>::value,
-              "DGPC maps from points of faces");
 
 BOOST_AUTO_TEST_CASE(requests_are_checked) {
   Request_limits limits;
@@ -126,13 +125,6 @@ BOOST_AUTO_TEST_CASE(methods_are_checked_by_name) {
   BOOST_TEST(throws_with<Bad_request>(
       [&] { service.compute({{"point", "0,0,0"}, {"method", "nope"}, {"fraction", "0.1"}}); },
       "unknown method 'nope' (known: heat, dem, dgpc, exact)"));
-  for (const Method_info& m : viewer_methods()) {
-    if (m.takes_points) continue;
-    BOOST_TEST_MESSAGE("method " << m.name << " does not take surface points");
-    BOOST_TEST(throws_with<Bad_request>(
-        [&] { service.compute({{"point", "0,0,0"}, {"method", m.name}, {"fraction", "0.1"}}); },
-        std::string("method ") + m.name + " does not take surface points yet"));
-  }
   BOOST_TEST(throws_with<Bad_request>(
       [&] { service.compute({{"point", "-1e308,0,1e308"}, {"method", "dgpc"}, {"fraction", "0.1"}}); },
       "point must be near the mesh"));
@@ -141,6 +133,35 @@ BOOST_AUTO_TEST_CASE(methods_are_checked_by_name) {
       "point must be near the mesh"));
   // Nothing was precomputed for the refused requests.
   BOOST_TEST(service.cache().status().empty());
+}
+
+// Every method maps from a point inside a face: the located point is the
+// one asked for, no vertex is at it, and the distances are the plane's.
+BOOST_AUTO_TEST_CASE(every_method_maps_from_a_point) {
+  const Mesh mesh = planar_grid();
+  Map_service service(mesh);
+  const std::array<double, 3> p{{0.0123, -0.0456, 0}};
+  for (const Method_info& m : viewer_methods()) {
+    BOOST_TEST_CONTEXT(m.name) {
+      const Map_response r =
+          service.compute({{"point", "0.0123,-0.0456,0"}, {"method", m.name}, {"radius", "0.3"}});
+      BOOST_TEST(r.method == m.name);
+      for (int d = 0; d < 3; ++d) BOOST_TEST(std::abs(r.position[d] - p[d]) < 1e-12);
+      BOOST_TEST(r.map.size() > 20u);
+      double worst = 0;
+      for (std::size_t i = 0; i < r.map.size(); ++i) {
+        const auto& q = mesh.point(r.map.vertices[i]);
+        const double plane = std::hypot(q.x() - p[0], q.y() - p[1]);
+        BOOST_TEST((r.map.distance[i] > 0 && std::isfinite(r.map.angle[i])));
+        worst = std::max(worst, std::abs(r.map.distance[i] - plane) / plane);
+      }
+      BOOST_TEST_MESSAGE(m.name << ": largest relative distance error " << worst);
+      // DEM, DGPC and exact are exact on a plane; heat is smoothed (its
+      // largest relative error here is 0.14).
+      BOOST_TEST(worst < (std::string(m.name) == "heat" ? 0.2 : 1e-12));
+      BOOST_TEST(map_json(r).find("nan") == std::string::npos);
+    }
+  }
 }
 
 BOOST_AUTO_TEST_CASE(precomputed_once_and_queries_capped) {

@@ -57,7 +57,7 @@ class Map_service {
 
   /// The map `params` (the query parameters of `GET /api/map`) ask for.
   /// \throws Bad_request for parameters that make no request, an unknown
-  ///         method or one that does not take surface points.
+  ///         method or a point far from the mesh.
   /// \throws Busy, Precomputation_failed as `Method_cache::acquire()`.
   /// \throws expmap::Invalid_input, expmap::Computation_error from the query.
   Map_response compute(const std::multimap<std::string, std::string>& params) {
@@ -68,12 +68,10 @@ class Map_service {
       for (const Method_info& m : viewer_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
       throw Bad_request("unknown method '" + request.method.substr(0, 40) + "' (known: " + known + ")");
     }
-    if (!info->takes_points)
-      throw Bad_request(std::string("method ") + info->name + " does not take surface points yet");
 
-    // The page sends points of the surface. Far ones are refused: they mean
-    // nothing, and CGAL's nearest-point search on coordinates near the
-    // largest double fails with a floating-point trap.
+    // The page sends points of the surface. Far ones are refused before any
+    // precomputation: their nearest surface points mean nothing to a viewer
+    // (the locator itself refuses only points too far to locate at all).
     for (int d = 0; d < 3; ++d)
       if (request.point[d] < m_box.min(d) - m_limits.max_radius ||
           request.point[d] > m_box.max(d) + m_limits.max_radius)

@@ -145,14 +145,14 @@ inline std::string map_json(const Map_response& r) {
   return j.text();
 }
 
-/// The methods (and which take surface points), the request limits, and
+/// The methods (and which take heat's time factor), the request limits, and
 /// every precomputation so far with its state: the page polls it to show
 /// progress.
 inline std::string status_json(const Map_service& service) {
   Json j;
   j.raw("{").key("methods").array(viewer_methods(), [](Json& o, const Method_info& m) {
     o.raw("{").key("name").string(m.name).key("label").string(m.label);
-    o.key("takes_points").boolean(m.takes_points).key("takes_time_factor").boolean(m.takes_time_factor);
+    o.key("takes_time_factor").boolean(m.takes_time_factor);
     if (m.takes_time_factor) o.key("default_m").number(default_time_factor());
     o.raw("}");
   });

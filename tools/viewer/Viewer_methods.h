@@ -14,14 +14,12 @@
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Surface_point.h>
-#include <expmap/internal/Point_source.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <memory>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -30,20 +28,6 @@ namespace expmap_view {
 using Mesh = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
 using Point_on_surface = expmap::Surface_point<Mesh::Face_index>;
-
-/// Whether `Method` maps from points inside faces: it has the
-/// `compute_at_point()` that `Method_front::compute(Surface_point, ...)`
-/// calls. The viewer places sources anywhere on the surface, so a method
-/// without it answers HTTP 400 ("does not take surface points yet") instead
-/// of a map from the nearest vertex that would not follow the pointer.
-template <class Method, class = void>
-struct takes_surface_points : std::false_type {};
-template <class Method>
-struct takes_surface_points<
-    Method, std::void_t<decltype(std::declval<const Method&>().compute_at_point(
-                std::declval<const expmap::internal::Point_source&>(),
-                std::declval<const expmap::Patch&>(),
-                std::declval<const typename Method::Query&>()))>> : std::true_type {};
 
 /// A precomputed method, as the viewer uses it. Queries are thread safe.
 class Viewer_method {
@@ -64,12 +48,7 @@ class Viewer_method_model final : public Viewer_method {
     expmap::Query_options shared;
     shared.find_fold_free_radius = true;
     const typename Method::Query query(shared);
-    if constexpr (takes_surface_points<Method>::value) {
-      return m_method.compute(source, patch, query);
-    } else {
-      // The server asks `Method_info::takes_points` before precomputing.
-      throw expmap::Invalid_input("this method does not take surface points yet");
-    }
+    return m_method.compute(source, patch, query);
   }
 
  private:
@@ -80,7 +59,6 @@ class Viewer_method_model final : public Viewer_method {
 struct Method_info {
   const char* name;   ///< as in the URL and the API: heat, dem, dgpc, exact
   const char* label;  ///< for the page
-  bool takes_points;  ///< `takes_surface_points` of its class
   bool takes_time_factor;  ///< heat's m
   /// Precomputes the method on `mesh` (which must outlive it); `time_factor`
   /// is used only where `takes_time_factor`.
@@ -99,15 +77,14 @@ inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_fa
 }
 template <class Method>
 constexpr Method_info row(const char* name, const char* label) {
-  return {name, label, takes_surface_points<Method>::value, false, make_method<Method>};
+  return {name, label, false, make_method<Method>};
 }
 }  // namespace internal
 
 /// The methods, in the order the page lists them.
 inline const std::vector<Method_info>& viewer_methods() {
   static const std::vector<Method_info> table{
-      {"heat", "heat method", takes_surface_points<expmap::Heat_exponential_map<Mesh>>::value, true,
-       internal::make_heat},
+      {"heat", "heat method", true, internal::make_heat},
       internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM"),
       internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC"),
       internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact"),

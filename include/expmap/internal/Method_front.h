@@ -30,12 +30,10 @@ namespace internal {
 ///
 /// which must be thread safe; everything here is written in terms of it.
 /// `QueryOptions` is the method's per-query settings: `Query_options`, or a
-/// type that extends it and converts from it. Methods that map from points
-/// of faces also provide
+/// type that extends it and converts from it. For a point of a face that is
+/// no vertex (a vertex goes to `compute_by_index()`) it also provides
 ///
 ///     Result compute_at_point(const Point_source&, const Patch&, const QueryOptions&) const;
-///
-/// for a point that is no vertex (a vertex goes to `compute_by_index()`).
 template <class Derived, class TriangleMesh, class VertexPointMap,
           class QueryOptions = Query_options>
 class Method_front {

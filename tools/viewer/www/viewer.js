@@ -36,9 +36,10 @@ async function main() {
   const [status, mesh] = await Promise.all([getJson('api/status'), getJson('api/mesh')]);
   const methods = status.methods;
   const heat = methods.find((m) => m.takes_time_factor);
-  const firstWithPoints = methods.find((m) => m.takes_points) || methods[0];
+  // DGPC first: it factors no matrix, so the first map comes at once.
+  const first = methods.find((m) => m.name === 'dgpc') || methods[0];
   const state = readState(location.search, {
-    point: null, method: firstWithPoints.name, fraction: 0.05, radius: null,
+    point: null, method: first.name, fraction: 0.05, radius: null,
     m: heat ? heat.default_m : null, compare: '',
   });
 
@@ -68,11 +69,7 @@ async function main() {
 
   // Controls, filled from the server's method list.
   for (const select of [$('method'), $('compare')])
-    for (const m of methods) {
-      const option = new Option(m.label + (m.takes_points ? '' : ' (no surface points yet)'), m.name);
-      option.disabled = !m.takes_points;
-      select.add(option);
-    }
+    for (const m of methods) select.add(new Option(m.label, m.name));
   const syncControls = () => {
     $('method').value = state.method;
     $('compare').value = state.compare || '';
