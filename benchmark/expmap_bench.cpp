@@ -418,6 +418,7 @@ class Benchmark {
       } else if (method == "dem") {
         dem = construct_baseline<Dem>(method, mesh);
         turns.push_back(query_method(method, *dem));
+        if (m_options.source_points) turns.push_back(point_query_method(method, *dem, mesh));
       } else if (method == "dgpc") {
         dgpc = construct_baseline<Dgpc>(method, mesh);
         turns.push_back(query_method(method, *dgpc));
@@ -430,6 +431,7 @@ class Benchmark {
                     << " vertices here; expect up to seconds per query, minutes on 100k-vertex patches)\n";
         exact = construct_baseline<Exact>(method, mesh);
         turns.push_back(query_method(method, *exact));
+        if (m_options.source_points) turns.push_back(point_query_method(method, *exact, mesh));
       }
     }
     if (!turns.empty()) {
