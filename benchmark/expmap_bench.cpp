@@ -409,19 +409,20 @@ class Benchmark {
     std::unique_ptr<Dem> dem;
     std::unique_ptr<Dgpc> dgpc;
     std::unique_ptr<Exact> exact;
-    std::vector<Query_method> turns;
+    std::vector<Query_method> turns, point_turns;
     for (const std::string& method : m_options.methods) {
       if (method == "heat") {
         turns.push_back(query_method(method, *heat, m_heat_query));
         if (m_options.source_points)
-          turns.push_back(point_query_method(method, *heat, mesh, m_heat_query));
+          point_turns.push_back(point_query_method(method, *heat, mesh, m_heat_query));
       } else if (method == "dem") {
         dem = construct_baseline<Dem>(method, mesh);
         turns.push_back(query_method(method, *dem));
+        if (m_options.source_points) point_turns.push_back(point_query_method(method, *dem, mesh));
       } else if (method == "dgpc") {
         dgpc = construct_baseline<Dgpc>(method, mesh);
         turns.push_back(query_method(method, *dgpc));
-        if (m_options.source_points) turns.push_back(point_query_method(method, *dgpc, mesh));
+        if (m_options.source_points) point_turns.push_back(point_query_method(method, *dgpc, mesh));
       } else if (method == "exact") {
         const std::size_t largest = expmap::Patch::fraction(*std::max_element(
             m_options.fractions.begin(), m_options.fractions.end())).target_count(n);
@@ -430,8 +431,12 @@ class Benchmark {
                     << " vertices here; expect up to seconds per query, minutes on 100k-vertex patches)\n";
         exact = construct_baseline<Exact>(method, mesh);
         turns.push_back(query_method(method, *exact));
+        if (m_options.source_points) point_turns.push_back(point_query_method(method, *exact, mesh));
       }
     }
+    // The point twins after all vertex queries: next to their vertex twin they
+    // would find its neighbourhood in the caches.
+    turns.insert(turns.end(), point_turns.begin(), point_turns.end());
     if (!turns.empty()) {
       Stopwatch watch;
       std::vector<Query_record> r =

@@ -29,17 +29,12 @@ namespace internal {
 inline double point_native_angle(const Mesh_arrays& m, const Point_source& p, const Vector3& d) {
   using P2 = std::array<double, 2>;
   const auto& c = p.corner;
-  // The face's plane coordinates of point_one_ring(): corner 0 at the
-  // origin, corner 1 on the x axis, corner 2 above it.
-  const Vector3 ab = m.point[c[1]] - m.point[c[0]], ac = m.point[c[2]] - m.point[c[0]];
-  const double lab = norm(ab);
-  const Vector3 ex = (1.0 / lab) * ab;
-  const double cx = dot(ac, ex);
-  const Vector3 up = ac - cx * ex;
-  const double cy = norm(up);
-  const Vector3 ey = (1.0 / cy) * up;
-  const P2 q[3] = {{0, 0}, {lab, 0}, {cx, cy}};
-  const P2 s{{p.weight[1] * q[1][0] + p.weight[2] * q[2][0], p.weight[2] * q[2][1]}};
+  // The face's plane coordinates of point_one_ring().
+  const Face_unfolding unfolded = unfold_face(m, p);
+  const Vector3& ex = unfolded.ex;
+  const Vector3& ey = unfolded.ey;
+  const std::array<P2, 3>& q = unfolded.corner;
+  const P2& s = unfolded.point;
   const double a0 = std::atan2(q[0][1] - s[1], q[0][0] - s[0]);
 
   P2 planar{{dot(d, ex), dot(d, ey)}};

@@ -89,22 +89,32 @@ inline Tangent_frame point_tangent_frame(const Mesh_arrays& m, const Point_sourc
     const auto& c = p.corner;
     n = cross(m.point[c[1]] - m.point[c[0]], m.point[c[2]] - m.point[c[0]]);
   }
-  Tangent_frame frame;
-  frame.normal = (1.0 / norm(n)) * n;
-  Vector3 r;
-  if (reference)
-    r = *reference;
-  else
-    r = std::abs(frame.normal[0]) > std::sqrt(3.0) / 2 ? Vector3{{0, 1, 0}} : Vector3{{1, 0, 0}};
-  const double r_norm = norm(r);
-  const Vector3 projected = r - dot(r, frame.normal) * frame.normal;
-  const double p_norm = norm(projected);
-  if (!(r_norm > 0) || !std::isfinite(r_norm) || !(p_norm > 1e-6 * r_norm))
-    throw Invalid_input("the reference direction is zero, not finite, or parallel to the normal "
-                        "at the source point in face " + std::to_string(p.user_face));
-  frame.e1 = (1.0 / p_norm) * projected;
-  frame.e2 = cross(frame.normal, frame.e1);
-  return frame;
+  return frame_from_normal((1.0 / norm(n)) * n, reference,
+                           "the source point in face " + std::to_string(p.user_face));
+}
+
+/// A point's face laid into its plane: corner 0 at the origin, corner 1 on
+/// the x axis (along `ex`), corner 2 above it (`ey` the plane's y axis).
+struct Face_unfolding {
+  Vector3 ex, ey;
+  std::array<std::array<double, 2>, 3> corner;
+  std::array<double, 2> point;
+};
+
+inline Face_unfolding unfold_face(const Mesh_arrays& m, const Point_source& p) {
+  const auto& c = p.corner;
+  const Vector3 ab = m.point[c[1]] - m.point[c[0]], ac = m.point[c[2]] - m.point[c[0]];
+  const double lab = norm(ab);
+  Face_unfolding u;
+  u.ex = (1.0 / lab) * ab;
+  const double cx = dot(ac, u.ex);
+  const Vector3 up = ac - cx * u.ex;
+  const double cy = norm(up);
+  u.ey = (1.0 / cy) * up;
+  u.corner = {{{{0, 0}}, {{lab, 0}}, {{cx, cy}}}};
+  u.point = {{p.weight[1] * u.corner[1][0] + p.weight[2] * u.corner[2][0],
+              p.weight[2] * u.corner[2][1]}};
+  return u;
 }
 
 /// The vertices around a point source whose distances and native angles
@@ -135,12 +145,9 @@ inline Point_ring point_one_ring(const Mesh_arrays& m, const Point_source& p,
                                  const Tangent_frame& frame) {
   using P2 = std::array<double, 2>;
   const auto& c = p.corner;
-  const Vector3 ab = m.point[c[1]] - m.point[c[0]], ac = m.point[c[2]] - m.point[c[0]];
-  const double lab = norm(ab);
-  const Vector3 ex = (1.0 / lab) * ab;
-  const double cx = dot(ac, ex);
-  const P2 q[3] = {{0, 0}, {lab, 0}, {cx, norm(ac - cx * ex)}};
-  const P2 s{{p.weight[1] * q[1][0] + p.weight[2] * q[2][0], p.weight[2] * q[2][1]}};
+  const Face_unfolding unfolded = unfold_face(m, p);
+  const std::array<P2, 3>& q = unfolded.corner;
+  const P2& s = unfolded.point;
 
   struct Entry {
     int vertex;

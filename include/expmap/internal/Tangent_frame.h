@@ -71,16 +71,14 @@ inline Vector3 vertex_normal(const Mesh_arrays& m, int v) {
   return area_normal;
 }
 
-/// The frame at `source`. `reference` (any vector not parallel to the
-/// normal) gives the direction of angle zero after projection onto the
-/// tangent plane; by default the world x axis is projected, or the y axis
-/// where the normal is within 30 degrees of x. A global default keeps maps
-/// at nearby sources consistently oriented (useful for decals).
+/// The frame of unit normal `normal` whose e1 is `reference` (by default the
+/// world x axis, or y where the normal is within 30 degrees of x) projected
+/// onto the tangent plane. `where` names the source in the error message.
 /// \throws Invalid_input if `reference` is (nearly) parallel to the normal.
-inline Tangent_frame tangent_frame(const Mesh_arrays& m, int source,
-                                   const std::optional<Vector3>& reference) {
+inline Tangent_frame frame_from_normal(const Vector3& normal, const std::optional<Vector3>& reference,
+                                       const std::string& where) {
   Tangent_frame frame;
-  frame.normal = vertex_normal(m, source);
+  frame.normal = normal;
   Vector3 r;
   if (reference) {
     r = *reference;
@@ -92,10 +90,22 @@ inline Tangent_frame tangent_frame(const Mesh_arrays& m, int source,
   const double p_norm = norm(projected);
   if (!(r_norm > 0) || !std::isfinite(r_norm) || !(p_norm > 1e-6 * r_norm))
     throw Invalid_input("the reference direction is zero, not finite, or parallel to the normal "
-                        "at source vertex " + std::to_string(m.to_original(source)));
+                        "at " + where);
   frame.e1 = (1.0 / p_norm) * projected;
   frame.e2 = cross(frame.normal, frame.e1);
   return frame;
+}
+
+/// The frame at `source`. `reference` (any vector not parallel to the
+/// normal) gives the direction of angle zero after projection onto the
+/// tangent plane; by default the world x axis is projected, or the y axis
+/// where the normal is within 30 degrees of x. A global default keeps maps
+/// at nearby sources consistently oriented (useful for decals).
+/// \throws Invalid_input if `reference` is (nearly) parallel to the normal.
+inline Tangent_frame tangent_frame(const Mesh_arrays& m, int source,
+                                   const std::optional<Vector3>& reference) {
+  return frame_from_normal(vertex_normal(m, source), reference,
+                           "source vertex " + std::to_string(m.to_original(source)));
 }
 
 }  // namespace internal
