@@ -59,10 +59,12 @@ struct Batch_result {
 
 namespace internal {
 
-/// The message of a failed query, naming its source (by index in the
-/// user's mesh) unless the library's message already does.
-inline std::string batch_error_message(std::size_t source, const std::string& what) {
-  const std::string name = "source vertex " + std::to_string(source);
+/// The message of a failed query, naming its source as `noun` and its
+/// index (in the user's mesh, or in the list of points) unless the
+/// library's message already does.
+inline std::string batch_error_message(std::size_t source, const std::string& what,
+                                       const char* noun = "source vertex") {
+  const std::string name = noun + (" " + std::to_string(source));
   const std::string::size_type at = what.find(name);
   const bool named = at != std::string::npos &&
                      (at + name.size() == what.size() || !std::isdigit(static_cast<unsigned char>(
@@ -73,10 +75,11 @@ inline std::string batch_error_message(std::size_t source, const std::string& wh
 /// Answers `query(sources[i])` for every i on the threads `batch` asks for
 /// and collects the maps in source order. An exception from a query becomes
 /// that source's error; one from `batch.progress` stops the batch and is
-/// rethrown.
+/// rethrown. `noun` names a source in the errors.
 template <class VertexDescriptor, class Query>
 Batch_result<VertexDescriptor> run_batch(const std::vector<std::size_t>& sources,
-                                         const Batch_options& batch, Query query) {
+                                         const Batch_options& batch, Query query,
+                                         const char* noun = "source vertex") {
   Batch_result<VertexDescriptor> result;
   result.maps.resize(sources.size());
   result.errors.resize(sources.size());
@@ -87,9 +90,9 @@ Batch_result<VertexDescriptor> run_batch(const std::vector<std::size_t>& sources
                   try {
                     result.maps[i] = query(sources[i]);
                   } catch (const std::exception& e) {
-                    result.errors[i] = batch_error_message(sources[i], user_message(e));
+                    result.errors[i] = batch_error_message(sources[i], user_message(e), noun);
                   } catch (...) {
-                    result.errors[i] = batch_error_message(sources[i], "unknown error");
+                    result.errors[i] = batch_error_message(sources[i], "unknown error", noun);
                   }
                   std::lock_guard<std::mutex> lock(progress_mutex);
                   ++done;

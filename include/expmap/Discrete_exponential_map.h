@@ -116,6 +116,9 @@ class Discrete_exponential_map
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
+ private:
+  friend Front;  // calls compute_at_point()
+
   /// A point source that is no vertex (reached through `compute()` with a
   /// `Surface_point`). The search starts at the face's corners (and, for a
   /// point on an edge, the apex across it: the same vertices from either
@@ -128,7 +131,6 @@ class Discrete_exponential_map
   Result compute_at_point(const internal::Point_source& point, const Patch& patch,
                           const Query_options& query = {}) const;
 
- private:
   struct Workspace {
     explicit Workspace(std::size_t n) : dijkstra(n), u(n), turn(n) {
       wanted.resize(n);

@@ -108,6 +108,9 @@ class Exact_exponential_map
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
+ private:
+  friend Front;  // calls compute_at_point()
+
   /// A point source that is no vertex (reached through `compute()` with a
   /// `Surface_point`): the sequence tree grows from the face location
   /// itself (`add_source_point(face, barycentric)`), so distances are the
@@ -119,7 +122,6 @@ class Exact_exponential_map
   Result compute_at_point(const internal::Point_source& point, const Patch& patch,
                           const Query_options& query = {}) const;
 
- private:
   using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Submesh = CGAL::Surface_mesh<Kernel::Point_3>;
   using Shortest_paths =
@@ -329,11 +331,13 @@ Exact_exponential_map<TM, VPM>::compute_at_point(const internal::Point_source& p
     shortest_edge = std::min(shortest_edge, internal::norm(m_indexed.arrays.point[c[(k + 1) % 3]] -
                                                            m_indexed.arrays.point[c[k]]));
   }
-  // The point is no corner: one coordinate at most is 0.
-  const auto zero = std::find(point.weight.begin(), point.weight.end(), 0.0);
-  if (zero != point.weight.end()) {
-    for (double& w : weight) w *= 1 - edge_shift;
-    weight[zero - point.weight.begin()] = edge_shift;
+  // The point is no corner: one coordinate at most is 0, or below the
+  // shift (as near the edge as that, the location is on it for CGAL too).
+  const auto smallest = std::min_element(point.weight.begin(), point.weight.end());
+  if (*smallest < edge_shift) {
+    const std::size_t k = static_cast<std::size_t>(smallest - point.weight.begin());
+    for (double& w : weight) w *= (1 - edge_shift) / (1 - *smallest);
+    weight[k] = edge_shift;
   }
   const double near = 1e-7 * shortest_edge;
 
@@ -383,7 +387,7 @@ typename Exact_exponential_map<TM, VPM>::Result Exact_exponential_map<TM, VPM>::
             .first);
     if (r < 0) continue;  // not reached (cannot happen for the vertices a patch needs)
     if (q.kind == Patch::Kind::geodesic_radius && r > patch.radius()) continue;
-    ws.entries.push_back({static_cast<int>(i), r, 0.0});  // local index for now
+    ws.entries.push_back({static_cast<int>(i), r, 0.0});  // the ball's index; the mesh's below
   }
   auto nearer = [](const internal::Polar_entry& a, const internal::Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);

@@ -104,6 +104,9 @@ class Geodesic_polar_coordinates
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
 
+ private:
+  friend Front;  // calls compute_at_point()
+
   /// A point source that is no vertex (reached through `compute()` with a
   /// `Surface_point`): the front starts at the face's corners and the
   /// apexes of its neighbours, with the distances and angles of the face's
@@ -112,7 +115,6 @@ class Geodesic_polar_coordinates
   Result compute_at_point(const internal::Point_source& point, const Patch& patch,
                           const Query_options& query = {}) const;
 
- private:
   struct Workspace {
     explicit Workspace(std::size_t n) : distance(n), angle(n) {
       queue.resize(n);

@@ -120,20 +120,6 @@ class Heat_exponential_map
                                                        : std::vector<int>{});
   }
 
-  /// Polar coordinates around a point of a face that is no vertex (see
-  /// `compute(const Surface_point&, ...)`): its heat is its corners'
-  /// combined, the gradient stencil and the geometric coordinates next to
-  /// it are its corners' (doc/surface_points.md).
-  Result compute_at_point(const internal::Point_source& point, const Patch& patch,
-                          const Query& query = {}) const {
-    const Query& checked_query = checked(query);
-    const internal::Checked_query q =
-        internal::checked_point_query(m_indexed.arrays, point, patch, query);
-    const internal::heat::Source source = internal::heat::point_source(point);
-    return run(context(checked_query, source), q.frame, reference_of(query), patch, q.target,
-               q.wanted);
-  }
-
   /// Diffusion time t = time_factor * h^2.
   double time_step() const { return m_factors.time_step; }
   /// Mean edge length h of the input mesh.
@@ -200,6 +186,22 @@ class Heat_exponential_map
   static constexpr double blend_normal_turn = internal::heat::blend_normal_turn;
 
  private:
+  friend Front;  // calls compute_at_point()
+
+  /// Polar coordinates around a point of a face that is no vertex (see
+  /// `compute(const Surface_point&, ...)`): its heat is its corners'
+  /// combined, the gradient stencil and the geometric coordinates next to
+  /// it are its corners' (doc/surface_points.md).
+  Result compute_at_point(const internal::Point_source& point, const Patch& patch,
+                          const Query& query = {}) const {
+    const Query& checked_query = checked(query);
+    const internal::Checked_query q =
+        internal::checked_point_query(m_indexed.arrays, point, patch, query);
+    const internal::heat::Source source = internal::heat::point_source(point);
+    return run(context(checked_query, source), q.frame, reference_of(query), patch, q.target,
+               q.wanted);
+  }
+
   internal::heat::Context context(const Query& query, const internal::heat::Source& source) const {
     return {m_indexed.arrays, m_factors, m_options, query, source};
   }

@@ -55,14 +55,18 @@ class Surface_point_locator {
   ///         coordinate that is not finite.
   explicit Surface_point_locator(const TriangleMesh& tm) : m_tm(tm) {
     if (faces(tm).empty()) throw Invalid_input("cannot locate points on a mesh without faces");
+    for (const auto v : vertices(tm)) {
+      const Point_3& p = get(CGAL::vertex_point, tm, v);
+      if (!std::isfinite(CGAL::to_double(p.x())) || !std::isfinite(CGAL::to_double(p.y())) ||
+          !std::isfinite(CGAL::to_double(p.z())))
+        throw Invalid_input("cannot locate points on a mesh with coordinates that are not finite");
+    }
     const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(tm);
     for (int k = 0; k < 3; ++k) {
       m_low[k] = box.min(k);
       m_high[k] = box.max(k);
       m_size = std::max(m_size, m_high[k] - m_low[k]);
     }
-    if (!std::isfinite(m_size))
-      throw Invalid_input("cannot locate points on a mesh with coordinates that are not finite");
     CGAL::Polygon_mesh_processing::build_AABB_tree(tm, m_tree);
   }
 
@@ -86,6 +90,10 @@ class Surface_point_locator {
       point.barycentric[k] = w < 1e-12 ? 0.0 : w;
       sum += point.barycentric[k];
     }
+    if (!(sum > 0) || !std::isfinite(sum))
+      throw Computation_error(
+          "the nearest surface point's barycentric coordinates came out not finite (a degenerate "
+          "face near the point?)");
     for (double& w : point.barycentric) w /= sum;
     return point;
   }

@@ -232,6 +232,16 @@ void check_bad_points() {
                     expmap::Invalid_input);
   BOOST_CHECK_THROW(method.compute(Point_source{Face(0), {{NAN, 0, 1}}}, patch),
                     expmap::Invalid_input);
+  // Each finite, but their sum is not.
+  BOOST_CHECK_THROW(method.compute(Point_source{Face(0), {{1e308, 1e308, 1e308}}}, patch),
+                    expmap::Invalid_input);
+  // A batch names a failed point by its position.
+  const auto batch =
+      method.compute_many(std::vector<Point_source>{{Face(0), {{0.2, 0.3, 0.5}}},
+                                                    {Face(0), {{-1, 1, 1}}}},
+                          patch);
+  BOOST_TEST(batch.errors[0].empty());
+  BOOST_TEST(batch.errors[1].find("source point 1") != std::string::npos);
   const Face beyond(static_cast<Surface_mesh::size_type>(mesh.number_of_faces() + 3));
   BOOST_CHECK_THROW(method.compute(Point_source{beyond, {{0.3, 0.3, 0.4}}}, patch),
                     expmap::Invalid_input);

@@ -76,10 +76,14 @@ BOOST_AUTO_TEST_CASE(locator_refuses_points_it_cannot_locate) {
 }
 
 // A mesh without faces has no point to locate.
-BOOST_AUTO_TEST_CASE(locator_refuses_a_mesh_without_faces) {
+BOOST_AUTO_TEST_CASE(locator_refuses_a_mesh_without_faces_or_with_nan) {
   Surface_mesh empty;
   empty.add_vertex(Surface_mesh::Point(0, 0, 0));
   BOOST_CHECK_THROW(expmap::Surface_point_locator<Surface_mesh>{empty}, expmap::Invalid_input);
+  // A vertex whose coordinate is not a number (a bounding box skips it).
+  Surface_mesh mesh = to_mesh<Surface_mesh>(icosphere(5));
+  mesh.point(*mesh.vertices().begin()) = Surface_mesh::Point(NAN, 0, 0);
+  BOOST_CHECK_THROW(expmap::Surface_point_locator<Surface_mesh>{mesh}, expmap::Invalid_input);
 }
 
 BOOST_AUTO_TEST_CASE(dgpc_corner_is_the_vertex) {

@@ -34,6 +34,8 @@ namespace internal {
 /// no vertex (a vertex goes to `compute_by_index()`) it also provides
 ///
 ///     Result compute_at_point(const Point_source&, const Patch&, const QueryOptions&) const;
+///
+/// (private, with this class a friend: it takes an internal type).
 template <class Derived, class TriangleMesh, class VertexPointMap,
           class QueryOptions = Query_options>
 class Method_front {
@@ -87,9 +89,9 @@ class Method_front {
       const Batch_options& batch = {}, const Query& query = {}) const {
     std::vector<std::size_t> positions(sources.size());
     for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = i;
-    return run_batch<vertex_descriptor>(positions, batch, [&](std::size_t i) {
-      return compute(sources[i], patch, query);
-    });
+    return run_batch<vertex_descriptor>(
+        positions, batch, [&](std::size_t i) { return compute(sources[i], patch, query); },
+        "source point");
   }
 
   /// One map per source, computed on `batch.threads` threads (each query as

@@ -54,9 +54,9 @@ inline Point_source resolve_point_source(const Mesh_arrays& m, const std::vector
                           std::to_string(user_face) + " are not finite or negative");
     sum += std::max(0.0, x);
   }
-  if (!(sum > 0))
+  if (!(sum > 0) || !std::isfinite(sum))
     throw Invalid_input("the barycentric coordinates of the source point in face " +
-                        std::to_string(user_face) + " sum to zero");
+                        std::to_string(user_face) + (sum > 0 ? " are too large to sum" : " sum to zero"));
   Point_source p;
   p.user_face = user_face;
   p.face = face_of_index[user_face];
