@@ -41,9 +41,12 @@ namespace expmap {
 template <class TriangleMesh>
 class Surface_point_locator {
  public:
+  /// The mesh's face type, which located points name.
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  /// The point type of the mesh's `vertex_point` map.
   using Point_3 = typename boost::property_traits<
       typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>::value_type;
+  /// The kernel of `Point_3`, whose AABB traits the tree uses.
   using Kernel = typename CGAL::Kernel_traits<Point_3>::Kernel;
 
   /// How far from the mesh's bounding box, in multiples of its largest
