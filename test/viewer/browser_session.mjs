@@ -20,16 +20,16 @@ export function options(argv, required) {
   return o;
 }
 
-// Starts `expmap view MESH --port 0`; resolves to { url, port, stop() } once
-// it prints its address.
-export function startServer(expmap, mesh) {
+// Starts `expmap view MESH --port 0 --host HOST` (an IPv4 address);
+// resolves to { url, port, stop() } once it prints its address.
+export function startServer(expmap, mesh, host = '127.0.0.1') {
   return new Promise((resolve, reject) => {
-    const child = spawn(expmap, ['view', mesh, '--port', '0'], { stdio: ['ignore', 'pipe', 'pipe'] });
+    const child = spawn(expmap, ['view', mesh, '--port', '0', '--host', host], { stdio: ['ignore', 'pipe', 'pipe'] });
     let out = '', err = '';
     const timer = setTimeout(() => { child.kill(); reject(new Error('the server did not start in 60 s')); }, 60000);
     child.stdout.on('data', (d) => {
       out += d;
-      const m = out.match(/viewer: +(http:\/\/127\.0\.0\.1:(\d+)\/)/);
+      const m = out.match(new RegExp(`viewer: +(http://${host.replaceAll('.', '\\.')}:(\\d+)/)`));
       if (m) {
         clearTimeout(timer);
         resolve({ url: m[1], port: Number(m[2]), stop: () => child.kill(), output: () => out + err });
@@ -43,11 +43,11 @@ export function startServer(expmap, mesh) {
   });
 }
 
-// GET `target` (a path) from the server, with optional headers; resolves
-// to { status, headers, body } with the body as text.
-export function get(port, target, headers = {}) {
+// GET `target` (a path) from the server at `host`, with optional headers;
+// resolves to { status, headers, body } with the body as text.
+export function get(port, target, headers = {}, host = '127.0.0.1') {
   return new Promise((resolve, reject) => {
-    const req = http.request({ host: '127.0.0.1', port, path: target, headers: { Host: `127.0.0.1:${port}`, ...headers } },
+    const req = http.request({ host, port, path: target, headers: { Host: `${host}:${port}`, ...headers } },
       (res) => {
         let body = '';
         res.setEncoding('utf8');

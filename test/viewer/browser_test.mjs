@@ -34,6 +34,21 @@ for (const [args, status, message] of [
 }
 check(spawnSync(o.expmap, ['view', '--help'], { encoding: 'utf8' }).stdout.includes('--host H'), 'expmap view --help');
 
+// Bound to another loopback address, the server answers requests addressed
+// to that address, and still refuses other host names.
+{
+  const other = await startServer(o.expmap, o.mesh, '127.0.0.2');
+  try {
+    const own = await get(other.port, '/api/status', {}, '127.0.0.2');
+    check(own.status === 200, `--host 127.0.0.2 answers requests to 127.0.0.2 (got ${own.status} ${own.body.slice(0, 200)})`);
+    const foreign = await get(other.port, '/api/status', { Host: `attacker.example:${other.port}` }, '127.0.0.2');
+    check(foreign.status === 403 && JSON.parse(foreign.body).error.includes(`127.0.0.2:${other.port}`),
+      `--host 127.0.0.2 refuses another host name, naming its own (got ${foreign.status} ${foreign.body})`);
+  } finally {
+    other.stop();
+  }
+}
+
 const server = await startServer(o.expmap, o.mesh);
 const browser = await launchBrowser(o['npm-dir']).catch((e) => { server.stop(); throw e; });
 try {

@@ -13,8 +13,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
+#include <vector>
 
 using namespace expmap_view;
 
@@ -33,6 +35,46 @@ bool throws_with(F f, const std::string& text) {
     return false;
   }
   return false;
+}
+
+// The numbers of the array `"name":[...]` in `json`, read back; an entry
+// that is no number (such as null) reads as NaN.
+std::vector<double> json_numbers(const std::string& json, const std::string& name) {
+  const std::string head = "\"" + name + "\":[";
+  const std::string::size_type start = json.find(head);
+  BOOST_REQUIRE_MESSAGE(start != std::string::npos, "no array " << name);
+  const std::string::size_type end = json.find(']', start);
+  BOOST_REQUIRE(end != std::string::npos);
+  std::vector<double> values;
+  std::string::size_type i = start + head.size();
+  while (i < end) {
+    const std::string::size_type comma = std::min(json.find(',', i), end);
+    const std::string item = json.substr(i, comma - i);
+    char* stop = nullptr;
+    const double x = std::strtod(item.c_str(), &stop);
+    values.push_back(!item.empty() && stop == item.c_str() + item.size() ? x : std::nan(""));
+    i = comma + 1;
+  }
+  return values;
+}
+
+// Whether the JSON of `r` holds its map's r, theta, u and v, every value
+// finite and read back exactly.
+bool json_holds_the_map(const Map_response& r) {
+  const std::string json = map_json(r);
+  const std::vector<double> distance = json_numbers(json, "r"), angle = json_numbers(json, "theta"),
+                            u = json_numbers(json, "u"), v = json_numbers(json, "v");
+  if (distance.size() != r.map.size() || angle.size() != r.map.size() || u.size() != r.map.size() ||
+      v.size() != r.map.size())
+    return false;
+  for (std::size_t i = 0; i < r.map.size(); ++i) {
+    const auto uv = r.map.uv(i);
+    for (const double x : {distance[i], angle[i], u[i], v[i]})
+      if (!std::isfinite(x)) return false;
+    if (distance[i] != r.map.distance[i] || angle[i] != r.map.angle[i] || u[i] != uv[0] || v[i] != uv[1])
+      return false;
+  }
+  return true;
 }
 
 Mesh planar_grid() {
@@ -65,6 +107,18 @@ BOOST_AUTO_TEST_CASE(requests_are_checked) {
                  "'fraction' is given more than once"));
   BOOST_TEST(bad({{"point", "1,2,3"}, {"method", "dgpc"}, {"fraction", "0.1"}, {"colour\n", "1"}},
                  "unknown parameter 'colour?'"));
+
+  // Values echoed into messages are cut short and shown in printable ASCII.
+  BOOST_TEST(shown(std::string("a\xff\n") + std::string(100, 'b')) == "a??" + std::string(37, 'b') + "...");
+  BOOST_TEST(shown("0.5") == "0.5");
+  BOOST_TEST(bad({{"point", "1,2,3"}, {"method", "dgpc"}, {"fraction", "0.1\xc3" + std::string(200, '9')}},
+                 "fraction must be a finite number (got '0.1?" + std::string(36, '9') + "...')"));
+  BOOST_TEST(bad({{"point", "1,2,\x80" + std::string(200, '9')}, {"method", "dgpc"}, {"fraction", "0.1"}},
+                 "(got '?" + std::string(39, '9') + "...')"));
+  // JSON strings stay valid UTF-8: a valid sequence passes, stray bytes,
+  // surrogates and overlong forms become '?'.
+  BOOST_TEST(error_json("x\xe2\x82\xac\xff\xed\xa0\x80\xc0\xaf\"") ==
+             "{\"error\":\"x\xe2\x82\xac??????\\\"\"}");
 
   const Map_request r = parse_map_request(
       {{"point", "0.5,-1e-3,2"}, {"method", "heat"}, {"radius", "0.25"}, {"m", "12.5"}}, limits);
@@ -116,7 +170,20 @@ BOOST_AUTO_TEST_CASE(map_from_a_point_of_a_plane_is_exact) {
   const std::string json = map_json(r);
   BOOST_TEST(json.find("\"fold_free_radius\":") != std::string::npos);
   BOOST_TEST(json.find("\"flipped\":0,") != std::string::npos);
-  BOOST_TEST(json.find("nan") == std::string::npos);
+  BOOST_TEST(json_holds_the_map(r));
+
+  // The check above sees a null (the reading of a NaN that JSON cannot
+  // carry) as not finite.
+  const std::vector<double> read = json_numbers("{\"r\":[1.5,null,2]}", "r");
+  BOOST_TEST((read.size() == 3u && read[0] == 1.5 && std::isnan(read[1]) && read[2] == 2));
+  // A map with a value that is not finite is refused, not written as null.
+  Map_response broken = r;
+  broken.map.distance[3] = std::nan("");
+  BOOST_TEST(throws_with<expmap::Computation_error>([&] { map_json(broken); },
+                                                    "a value of \"r\" is not finite"));
+  broken = r;
+  broken.map.angle[0] = HUGE_VAL;
+  BOOST_TEST(throws_with<expmap::Computation_error>([&] { map_json(broken); }, "\"theta\""));
 }
 
 BOOST_AUTO_TEST_CASE(methods_are_checked_by_name) {
@@ -159,7 +226,7 @@ BOOST_AUTO_TEST_CASE(every_method_maps_from_a_point) {
       // DEM, DGPC and exact are exact on a plane; heat is smoothed (its
       // largest relative error here is 0.14).
       BOOST_TEST(worst < (std::string(m.name) == "heat" ? 0.2 : 1e-12));
-      BOOST_TEST(map_json(r).find("nan") == std::string::npos);
+      BOOST_TEST(json_holds_the_map(r));
     }
   }
 }

@@ -49,6 +49,19 @@ struct Map_request {
   std::optional<double> time_factor;  ///< `m`; only with method "heat"
 };
 
+/// `text` (a value from a request) as an error message may echo it: its
+/// first 40 bytes, each one outside printable ASCII replaced by '?', and
+/// "..." if cut. A request can carry any bytes at any length; the message
+/// stays short, readable and valid UTF-8.
+inline std::string shown(const std::string& text) {
+  constexpr std::size_t max_length = 40;
+  std::string s = text.substr(0, max_length);
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
+  if (text.size() > max_length) s += "...";
+  return s;
+}
+
 /// A finite number filling the whole of `text`; `name` for the message.
 inline double parse_number(const std::string& name, const std::string& text) {
   const char* begin = text.c_str();
@@ -56,7 +69,7 @@ inline double parse_number(const std::string& name, const std::string& text) {
   errno = 0;
   const double value = std::strtod(begin, &end);
   if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value))
-    throw Bad_request(name + " must be a finite number (got '" + text + "')");
+    throw Bad_request(name + " must be a finite number (got '" + shown(text) + "')");
   return value;
 }
 
@@ -67,7 +80,7 @@ inline std::array<double, 3> parse_point(const std::string& name, const std::str
   for (int k = 0; k < 3; ++k) {
     const std::string::size_type comma = text.find(',', start);
     if ((k < 2) != (comma != std::string::npos))
-      throw Bad_request(name + " must be three comma-separated numbers X,Y,Z (got '" + text + "')");
+      throw Bad_request(name + " must be three comma-separated numbers X,Y,Z (got '" + shown(text) + "')");
     p[k] = parse_number(name, text.substr(start, k < 2 ? comma - start : std::string::npos));
     start = comma + 1;
   }
@@ -87,13 +100,11 @@ inline Map_request parse_map_request(const std::multimap<std::string, std::strin
   for (auto it = params.begin(); it != params.end(); it = params.upper_bound(it->first)) {
     bool is_known = false;
     for (const char* k : known) is_known = is_known || it->first == k;
-    // Names are echoed into the message: keep it short and printable.
-    std::string shown = it->first.substr(0, 40);
-    for (char& c : shown)
-      if (static_cast<unsigned char>(c) < 32 || static_cast<unsigned char>(c) > 126) c = '?';
     if (!is_known)
-      throw Bad_request("unknown parameter '" + shown + "' (known: point, method, fraction, radius, m)");
-    if (params.count(it->first) > 1) throw Bad_request("parameter '" + shown + "' is given more than once");
+      throw Bad_request("unknown parameter '" + shown(it->first) +
+                        "' (known: point, method, fraction, radius, m)");
+    if (params.count(it->first) > 1)
+      throw Bad_request("parameter '" + shown(it->first) + "' is given more than once");
   }
   const auto value = [&](const char* name) -> std::optional<std::string> {
     const auto it = params.find(name);
@@ -113,13 +124,13 @@ inline Map_request parse_map_request(const std::multimap<std::string, std::strin
     r.fraction = parse_number("fraction", *f);
     if (!(*r.fraction > 0 && *r.fraction <= limits.max_fraction))
       throw Bad_request("fraction must be in (0, " + std::to_string(limits.max_fraction) +
-                        "] (got " + *f + ")");
+                        "] (got " + shown(*f) + ")");
   }
   if (const auto radius = value("radius")) {
     r.radius = parse_number("radius", *radius);
     if (!(*r.radius > 0 && *r.radius <= limits.max_radius))
       throw Bad_request("radius must be in (0, " + std::to_string(limits.max_radius) +
-                        "], the mesh's bounding-box diagonal (got " + *radius + ")");
+                        "], the mesh's bounding-box diagonal (got " + shown(*radius) + ")");
   }
   if (r.fraction.has_value() == r.radius.has_value())
     throw Bad_request("give exactly one of fraction=F and radius=R");
@@ -129,7 +140,7 @@ inline Map_request parse_map_request(const std::multimap<std::string, std::strin
     r.time_factor = parse_number("m", *m);
     if (!(*r.time_factor >= limits.min_time_factor && *r.time_factor <= limits.max_time_factor))
       throw Bad_request("m must be in [" + std::to_string(limits.min_time_factor) + ", " +
-                        std::to_string(limits.max_time_factor) + "] (got " + *m + ")");
+                        std::to_string(limits.max_time_factor) + "] (got " + shown(*m) + ")");
   }
   return r;
 }

@@ -66,7 +66,7 @@ class Map_service {
     if (!info) {
       std::string known;
       for (const Method_info& m : viewer_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-      throw Bad_request("unknown method '" + request.method.substr(0, 40) + "' (known: " + known + ")");
+      throw Bad_request("unknown method '" + shown(request.method) + "' (known: " + known + ")");
     }
 
     // The page sends points of the surface. Far ones are refused before any

@@ -13,8 +13,11 @@
 #include "Method_cache.h"
 #include "Viewer_methods.h"
 
+#include <expmap/Errors.h>
+
 #include <charconv>
 #include <cmath>
+#include <cstddef>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -28,8 +31,13 @@ class Json {
     m_text += text;
     return *this;
   }
+  /// \throws expmap::Computation_error for NaN or infinity, naming the
+  ///         key written last: JSON has no such numbers, and writing null
+  ///         instead would pass a broken map off as one with gaps.
   Json& number(double x) {
-    if (!std::isfinite(x)) return raw("null");  // JSON has no NaN nor infinity
+    if (!std::isfinite(x))
+      throw expmap::Computation_error("a value of \"" + m_key +
+                                      "\" is not finite (NaN or infinity): the computation failed");
     char buffer[32];
     const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
     m_text.append(buffer, end);
@@ -42,10 +50,20 @@ class Json {
     return *this;
   }
   Json& boolean(bool b) { return raw(b ? "true" : "false"); }
+  /// `s` as a JSON string; a byte that is no part of a valid UTF-8
+  /// sequence becomes '?', so that the response stays valid JSON whatever
+  /// a message holds.
   Json& string(const std::string& s) {
     m_text += '"';
-    for (const char c : s) {
+    for (std::size_t i = 0; i < s.size();) {
+      const char c = s[i];
       const auto u = static_cast<unsigned char>(c);
+      if (u >= 0x80) {
+        const std::size_t n = utf8_length(s, i);
+        m_text.append(n ? s.substr(i, n) : std::string("?"));
+        i += n ? n : 1;
+        continue;
+      }
       if (c == '"' || c == '\\') {
         m_text += '\\';
         m_text += c;
@@ -56,6 +74,7 @@ class Json {
       } else {
         m_text += c;
       }
+      ++i;
     }
     m_text += '"';
     return *this;
@@ -63,6 +82,7 @@ class Json {
   /// `"name":`, preceded by a comma unless it opens the object.
   Json& key(const char* name) {
     if (m_text.back() != '{') m_text += ',';
+    m_key = name;
     return string(name).raw(":");
   }
   template <class Range, class Write>
@@ -80,7 +100,34 @@ class Json {
   const std::string& text() const { return m_text; }
 
  private:
+  // The length of the valid UTF-8 sequence starting at s[i] (a byte of at
+  // least 0x80), or 0 if none starts there: no overlong forms, no
+  // surrogates, nothing beyond U+10FFFF (RFC 3629).
+  static std::size_t utf8_length(const std::string& s, std::size_t i) {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    const unsigned char lead = byte(i);
+    std::size_t n = 0;
+    unsigned char low = 0x80, high = 0xbf;  // the range of the second byte
+    if (lead >= 0xc2 && lead <= 0xdf) n = 2;
+    else if (lead >= 0xe0 && lead <= 0xef) {
+      n = 3;
+      if (lead == 0xe0) low = 0xa0;
+      if (lead == 0xed) high = 0x9f;
+    } else if (lead >= 0xf0 && lead <= 0xf4) {
+      n = 4;
+      if (lead == 0xf0) low = 0x90;
+      if (lead == 0xf4) high = 0x8f;
+    } else {
+      return 0;
+    }
+    if (i + n > s.size() || byte(i + 1) < low || byte(i + 1) > high) return 0;
+    for (std::size_t k = 2; k < n; ++k)
+      if (byte(i + k) < 0x80 || byte(i + k) > 0xbf) return 0;
+    return n;
+  }
+
   std::string m_text;
+  std::string m_key;  // the key written last, for number()'s message
 };
 
 /// `{"error": message}`.
@@ -114,6 +161,7 @@ inline std::string mesh_json(const Mesh& mesh) {
 /// A map: the patch vertices (mesh indices, nearest first) with r, theta,
 /// u, v; the flipped faces, the fold-free radius, the query time, and the
 /// source as located.
+/// \throws expmap::Computation_error if a value of the map is not finite.
 inline std::string map_json(const Map_response& r) {
   const Map& map = r.map;
   std::vector<double> u(map.size()), v(map.size());

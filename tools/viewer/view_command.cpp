@@ -181,7 +181,9 @@ std::map<std::string, std::shared_ptr<const Body>> read_page(const fs::path& fol
     if (!entry.is_regular_file()) continue;
     std::ifstream in(entry.path(), std::ios::binary);
     std::ostringstream content;
-    content << in.rdbuf();
+    if (in) content << in.rdbuf();
+    if (!in || in.bad())
+      throw std::runtime_error("cannot read the viewer's file '" + entry.path().string() + "'");
     files["/" + fs::relative(entry.path(), folder).generic_string()] =
         std::make_shared<const Body>(make_body(content.str(), mime_type(entry.path())));
   }
@@ -212,6 +214,12 @@ void answer(httplib::Response& res, Compute compute) {
 // Whether `host` (an address given to --host) is this machine's loopback.
 bool is_loopback(const std::string& host) {
   return host == "127.0.0.1" || host == "localhost" || host == "::1" || host.rfind("127.", 0) == 0;
+}
+
+// `host` as the authority of a URL or a Host header names it: an IPv6
+// address in brackets.
+std::string url_host(const std::string& host) {
+  return host.find(':') != std::string::npos ? "[" + host + "]" : host;
 }
 
 }  // namespace
@@ -279,13 +287,18 @@ int run_view_command(const std::vector<std::string>& args) {
   // resolves to 127.0.0.1; answering only requests addressed to this
   // machine's own names keeps such pages out.
   const bool loopback = is_loopback(a.host);
+  // The bound address itself is one of them (e.g. 127.0.0.2 given to --host).
+  const std::string bound = url_host(a.host);
   server.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
     if (!loopback) return httplib::Server::HandlerResponse::Unhandled;
     const std::string host = req.get_header_value("Host");
     const std::string p = ":" + std::to_string(port);
-    for (const char* name : {"127.0.0.1", "localhost", "[::1]"})
+    for (const std::string& name : {std::string("127.0.0.1"), std::string("localhost"),
+                                    std::string("[::1]"), bound})
       if (host == name + p) return httplib::Server::HandlerResponse::Unhandled;
-    send_json(res, 403, error_json("this server answers only requests to 127.0.0.1" + p + " or localhost" + p));
+    const std::string also = bound == "127.0.0.1" || bound == "localhost" ? "" : bound + p + ", ";
+    send_json(res, 403, error_json("this server answers only requests to " + also + "127.0.0.1" + p +
+                                   " or localhost" + p));
     return httplib::Server::HandlerResponse::Handled;
   });
 
@@ -301,7 +314,7 @@ int run_view_command(const std::vector<std::string>& args) {
   server.Get(R"(/.*)", [&](const httplib::Request& req, httplib::Response& res) {
     const auto it = page.find(req.path == "/" ? std::string("/index.html") : req.path);
     if (it == page.end() && req.path.rfind("/api/", 0) == 0) {
-      send_json(res, 404, error_json("no such API: " + req.path.substr(0, 60)));
+      send_json(res, 404, error_json("no such API: " + shown(req.path)));
       return;
     }
     if (it == page.end()) {
@@ -326,11 +339,10 @@ int run_view_command(const std::vector<std::string>& args) {
     return fail("cannot listen on " + a.host + ":" + std::to_string(port) +
                 " (in use? choose another with --port, or --port 0 for any free one)");
   }
-  const std::string shown_host = a.host.find(':') != std::string::npos ? "[" + a.host + "]" : a.host;
   std::printf("mesh:        %s: %zu vertices, %zu faces\n", a.mesh.c_str(),
               static_cast<std::size_t>(mesh.number_of_vertices()),
               static_cast<std::size_t>(mesh.number_of_faces()));
-  std::printf("viewer:      http://%s:%d/\n", shown_host.c_str(), port);
+  std::printf("viewer:      http://%s:%d/\n", bound.c_str(), port);
   std::fflush(stdout);
   if (!server.listen_after_bind()) return fail("the server stopped unexpectedly");
   return 0;
