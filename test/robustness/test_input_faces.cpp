@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace {
@@ -77,6 +78,28 @@ BOOST_AUTO_TEST_CASE(points_of_input_faces_survive_reading) {
   for (Mesh::Face_index f : mesh.faces())
     unnamed += !input.input_point({f, w}).has_value();
   BOOST_TEST(unnamed == 2u);
+}
+
+// An input vertex list of another length than the mesh's vertices is
+// refused by name, before any lookup.
+BOOST_AUTO_TEST_CASE(a_vertex_list_of_the_wrong_length_is_refused) {
+  Mesh mesh;
+  const auto a = mesh.add_vertex(Point(0, 0, 0)), b = mesh.add_vertex(Point(1, 0, 0)),
+             c = mesh.add_vertex(Point(0, 1, 0));
+  mesh.add_face(a, b, c);
+  const std::vector<std::vector<std::size_t>> faces = {{0, 1, 2}};
+  for (const std::vector<std::size_t>& rows : {std::vector<std::size_t>{0, 1}, std::vector<std::size_t>{0, 1, 2, 3}}) {
+    try {
+      const Faces input(mesh, rows, faces);
+      BOOST_ERROR("a list of " << rows.size() << " input vertices was taken for 3 vertices");
+    } catch (const expmap::Invalid_input& e) {
+      BOOST_TEST(std::string(e.what()).find("has " + std::to_string(rows.size()) +
+                                            " entries but the mesh has 3 vertices") != std::string::npos,
+                 e.what());
+    }
+  }
+  const Faces input(mesh, {0, 1, 2}, faces);
+  BOOST_TEST(input.surface_point({0, {{0.2, 0.3, 0.5}}}).face == *mesh.faces().begin());
 }
 
 BOOST_AUTO_TEST_SUITE_END()

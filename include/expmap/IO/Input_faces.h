@@ -12,14 +12,12 @@
 #include <expmap/Errors.h>
 #include <expmap/Surface_point.h>
 
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
-
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -54,11 +52,18 @@ class Input_faces {
   /// vertices in order; `input_vertex[i]` is the input index of the `i`th
   /// vertex of `vertices(tm)` (e.g. `Mesh_reading_report::file_index`).
   /// The mesh must outlive this object.
+  /// \throws Invalid_input if `input_vertex` has not one entry per vertex.
   Input_faces(const TriangleMesh& tm, const std::vector<std::size_t>& input_vertex,
               std::vector<std::vector<std::size_t>> input_faces)
       : m_tm(tm), m_faces(std::move(input_faces)) {
+    const auto all = vertices(tm);
+    const auto n = static_cast<std::size_t>(std::distance(all.begin(), all.end()));
+    if (input_vertex.size() != n)
+      throw Invalid_input("the input vertex list has " + std::to_string(input_vertex.size()) +
+                          " entries but the mesh has " + std::to_string(n) +
+                          " vertices: give one input index per vertex of the mesh");
     std::size_t i = 0;
-    for (vertex_descriptor v : vertices(tm)) m_input_vertex[v] = input_vertex.at(i++);
+    for (vertex_descriptor v : vertices(tm)) m_input_vertex[v] = input_vertex[i++];
     for (face_descriptor f : faces(tm)) m_mesh_face.emplace(key(corners(f)), f);
     for (std::size_t j = m_faces.size(); j-- > 0;)
       if (m_faces[j].size() == 3) m_first_row[key(input_corners(j))] = j;
