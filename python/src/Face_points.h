@@ -17,6 +17,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,8 +53,17 @@ class Face_points {
   Surface_point locate(const std::array<double, 3>& xyz) const { return m_locator.locate(xyz); }
 
   /// `p` as a row of the faces array (the first of duplicates) and the
-  /// coordinates of its corners; every face of the mesh is one of the rows.
-  Input_point input_point(const Surface_point& p) const { return *m_faces.input_point(p); }
+  /// coordinates of its corners.
+  /// \throws expmap::Computation_error if the face of `p` is none of the
+  ///         rows: the mesh is built from the rows as they are, so this
+  ///         would be a bug, not bad input.
+  Input_point input_point(const Surface_point& p) const {
+    const std::optional<Input_point> q = m_faces.input_point(p);
+    if (!q)
+      throw expmap::Computation_error("mesh face " + std::to_string(static_cast<std::size_t>(p.face)) +
+                                      " matches no row of the faces array");
+    return *q;
+  }
 
  private:
   static std::vector<std::vector<std::size_t>> polygons(

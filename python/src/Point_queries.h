@@ -51,7 +51,8 @@ Real_array points_argument(py::handle object, const char* name, bool& single) {
   return points;
 }
 
-/// Three barycentric coordinates, finite, none negative, not all zero.
+/// Three barycentric coordinates, finite with a finite sum (they are
+/// divided by it), none negative, not all zero.
 std::array<double, 3> barycentric_argument(py::handle object) {
   bool single = false;
   const Real_array w = points_argument(object, "barycentric", single);
@@ -59,6 +60,9 @@ std::array<double, 3> barycentric_argument(py::handle object) {
   const std::array<double, 3> b{{w.at(0, 0), w.at(0, 1), w.at(0, 2)}};
   if (b[0] < 0 || b[1] < 0 || b[2] < 0 || !(b[0] + b[1] + b[2] > 0))
     throw expmap::Invalid_input("barycentric must not be negative or all zero (got " +
+                                py::repr(object).cast<std::string>() + ")");
+  if (!std::isfinite(b[0] + b[1] + b[2]))
+    throw expmap::Invalid_input("barycentric must have a finite sum, to be rescaled to sum 1 (got " +
                                 py::repr(object).cast<std::string>() + ")");
   return b;
 }
@@ -155,7 +159,8 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
                    "           vertex_set=None, reference=None, trim_folds=False) -> LocalMap\n\n"
                    "Geodesic polar coordinates around the point of row ``face`` of the faces\n"
                    "array with barycentric coordinates ``barycentric`` (3 numbers, not\n"
-                   "negative, rescaled to sum 1) of that row's corners, in its order. ") +
+                   "negative, with a finite sum, rescaled to sum 1) of that row's corners, in\n"
+                   "its order. ") +
        point_doc + patch_doc +
        "\nTakes the query settings compute() takes. Raises ValueError for a face out\n"
        "of range, bad coordinates or a bad patch.")
@@ -234,8 +239,10 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
                    "the GIL. BatchMaps.sources holds each map's position in ``points``\n"
                    "(0 to k - 1). ") +
        patch_doc +
-       "\nA query that fails costs only its own map (see compute_many()). Raises\n"
-       "ValueError for a bad point (see locate()) or a bad patch.")
+       "\nA query that fails costs only its own map (see compute_many()). Every\n"
+       "point is located before any map is computed: a bad point (not finite, or\n"
+       "too far from the mesh; see locate()) or a bad patch raises ValueError for\n"
+       "the whole call, and no map is returned.")
           .c_str());
 }
 

@@ -166,6 +166,9 @@ def test_bad_points_raise_value_error(elephant, dgpc):
     for call in bad_calls:
         with pytest.raises(ValueError):
             call()
+    # Each coordinate finite, their sum not: refused by name, not divided.
+    with pytest.raises(ValueError, match="barycentric must have a finite sum"):
+        dgpc.compute_at(0, [1e308, 1e308, 1e308], vertices=5)
     with pytest.raises(TypeError):
         dgpc.compute_at(0, [1, 0, 0], vertices=5, angle_estimator="heat_gradient")
 
