@@ -206,12 +206,7 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
         const typename Method::Query query =
             query_argument<Method>("compute_many_at_points", reference, trim_folds, settings);
-        const std::size_t threads = index_argument(threads_object, "threads");
-        if (threads > 4096)
-          throw expmap::Invalid_input("threads must be at most 4096 (got " +
-                                      std::to_string(threads) + ")");
-        expmap::Batch_options options;
-        options.threads = static_cast<unsigned>(threads);
+        const expmap::Batch_options options = batch_options_argument(threads_object);
         const Face_points& lookup = face_points(b);
         const std::size_t k = static_cast<std::size_t>(points.shape(0));
         std::vector<std::size_t> positions(k);

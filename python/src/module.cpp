@@ -328,6 +328,17 @@ const char* const patch_doc =
     "its fold-free disk: only the vertices nearer than ``fold_free_radius``\n"
     "(the source always) stay, so no triangle of the result is flipped.\n";
 
+// The batch options of a `threads=` argument (0: one thread per core).
+expmap::Batch_options batch_options_argument(py::handle threads_object) {
+  const std::size_t threads = index_argument(threads_object, "threads");
+  if (threads > 4096)
+    throw expmap::Invalid_input("threads must be at most 4096 (got " + std::to_string(threads) +
+                                ")");
+  expmap::Batch_options options;
+  options.threads = static_cast<unsigned>(threads);
+  return options;
+}
+
 }  // namespace
 
 // The queries from points of faces, written with the helpers above.
@@ -382,12 +393,7 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
         const typename Method::Query query =
             query_argument<Method>("compute_many", reference, trim_folds, settings);
-        const std::size_t threads = index_argument(threads_object, "threads");
-        if (threads > 4096)
-          throw expmap::Invalid_input("threads must be at most 4096 (got " +
-                                      std::to_string(threads) + ")");
-        expmap::Batch_options options;
-        options.threads = static_cast<unsigned>(threads);
+        const expmap::Batch_options options = batch_options_argument(threads_object);
         expmap::Batch_result<Mesh::Vertex_index> batch;
         {
           py::gil_scoped_release release;
