@@ -28,6 +28,8 @@ namespace internal {
 struct Fold_free_disk {
   double radius = 0;
   bool folds = false;
+  std::size_t flipped = 0;    ///< patch triangles flipped or collapsed
+  std::size_t triangles = 0;  ///< all patch triangles
 };
 
 /// The disk of `map`, whose patch triangles `for_each_triangle(visit)`
@@ -44,8 +46,10 @@ Fold_free_disk fold_free_disk(const Local_map<VertexDescriptor>& map,
   for (std::size_t i = 0; i < map.size(); ++i) uv[i] = map.uv(i);
   const auto uv_of = [&](std::size_t i) { return uv[i]; };
   for_each_triangle([&](const std::array<std::size_t, 3>& corner) {
+    ++disk.triangles;
     if (signed_uv_area2(uv_of, corner) > 0) return;
     disk.folds = true;
+    ++disk.flipped;
     disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]], map.distance[corner[1]],
                                                   map.distance[corner[2]]}));
   });

@@ -67,8 +67,10 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
       if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
       const std::array<std::size_t, 3> corner{{i, static_cast<std::size_t>(position.value(face[1])),
                                                static_cast<std::size_t>(position.value(face[2]))}};
+      ++disk.triangles;
       if (signed_uv_area2(uv_of, corner) > 0) continue;
       disk.folds = true;
+      ++disk.flipped;
       disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]],
                                                     map.distance[corner[1]],
                                                     map.distance[corner[2]]}));
@@ -77,23 +79,18 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
   return disk;
 }
 
-/// Fills a `Local_map` the way every method reports it: the source first
-/// (r = 0, theta = 0), then the entries nearest first (ties by vertex
-/// index, so results do not depend on traversal order), with its fold-free
-/// radius if `query` asks for it, cut to that disk if `query.trim_folds`.
+/// A `Local_map` the way every method reports it: the source first (r = 0,
+/// theta = 0), then the entries nearest first (ties by vertex index, so
+/// results do not depend on traversal order), with no fold-free radius.
 /// Entries for the source itself are dropped. `entries` is sorted in place;
-/// their vertices and `source` are indices of the user's mesh, which `mesh`
-/// stores (maybe renumbered).
-/// `position` is scratch for `fold_free_disk()`. Without `source_row` (a
-/// point source that is no vertex) the map has no row at r = 0, keeps
-/// entries for `source`, and `source` only names the map's `source`.
+/// their vertices and `source` are indices of the user's mesh. Without
+/// `source_row` (a point source that is no vertex) the map has no row at
+/// r = 0, keeps entries for `source`, and `source` only names the map's
+/// `source`.
 template <class VertexDescriptor>
-Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
-                                               std::vector<Polar_entry>& entries,
-                                               const std::vector<VertexDescriptor>& descriptors,
-                                               const Tangent_frame& frame,
-                                               const Query_options& query,
-                                               Vertex_marks& position, bool source_row = true) {
+Local_map<VertexDescriptor> sorted_local_map(int source, std::vector<Polar_entry>& entries,
+                                             const std::vector<VertexDescriptor>& descriptors,
+                                             const Tangent_frame& frame, bool source_row = true) {
   auto nearer = [](const Polar_entry& a, const Polar_entry& b) {
     return a.distance < b.distance || (a.distance == b.distance && a.vertex < b.vertex);
   };
@@ -120,12 +117,33 @@ Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int sour
   if (source_row) add(source, 0.0, 0.0);
   for (const Polar_entry& e : entries)
     if (e.vertex != source || !source_row) add(e.vertex, e.distance, wrap_angle(e.angle));
-  if (!query.trim_folds && !query.find_fold_free_radius) return map;
-  const Fold_free_disk disk = fold_free_disk(mesh, map, position);
+  return map;
+}
+
+/// What `query` asks of a map's fold-free disk: its radius in the map
+/// (`find_fold_free_radius`), or the map cut to it (`trim_folds`).
+template <class VertexDescriptor>
+void apply_fold_options(Local_map<VertexDescriptor>& map, const Fold_free_disk& disk,
+                        const Query_options& query) {
   if (query.trim_folds)
     trim_to_disk(map, disk);
-  else
+  else if (query.find_fold_free_radius)
     map.fold_free_radius = disk.radius;
+}
+
+/// `sorted_local_map()` with the fold-free radius if `query` asks for it,
+/// cut to that disk if `query.trim_folds`. `mesh` stores the user's mesh
+/// (maybe renumbered); `position` is scratch for `fold_free_disk()`.
+template <class VertexDescriptor>
+Local_map<VertexDescriptor> assemble_local_map(const Mesh_arrays& mesh, int source,
+                                               std::vector<Polar_entry>& entries,
+                                               const std::vector<VertexDescriptor>& descriptors,
+                                               const Tangent_frame& frame,
+                                               const Query_options& query,
+                                               Vertex_marks& position, bool source_row = true) {
+  Local_map<VertexDescriptor> map = sorted_local_map(source, entries, descriptors, frame, source_row);
+  if (query.trim_folds || query.find_fold_free_radius)
+    apply_fold_options(map, fold_free_disk(mesh, map, position), query);
   return map;
 }
 
