@@ -10,6 +10,7 @@
 /// needs the mesh (the source index) is checked after reading it.
 
 #include <expmap/Angle_estimator.h>
+#include <expmap/Heat_options.h>
 
 #include <algorithm>
 #include <array>
@@ -67,6 +68,7 @@ struct Compute_arguments {
   std::optional<std::string> query_threads;     // "1" or "2"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
+  std::optional<expmap::Heat_fallback> fallback;
   std::optional<std::array<double, 3>> reference;
   bool triangulate = true;  // --no-triangulate refuses polygonal faces instead
   bool repair = false;
@@ -274,6 +276,13 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
         a.angles = expmap::angle_estimator_from_string(take_value());
       } catch (const expmap::Invalid_input& e) {
         throw Usage_error(std::string("--angles: ") + e.what());
+      }
+    } else if (name == "--fallback") {
+      once(a.fallback.has_value());
+      try {
+        a.fallback = expmap::heat_fallback_from_string(take_value());
+      } catch (const expmap::Invalid_input& e) {
+        throw Usage_error(std::string("--fallback: ") + e.what());
       }
     } else if (name == "--near-source-blend") {
       once(a.near_source_blend.has_value());

@@ -118,6 +118,7 @@ expmap::Heat_query_options query_settings<Heat>(const Compute_arguments& a,
   expmap::Heat_query_options query(shared);
   if (a.angles) query.angle_estimator = *a.angles;
   if (a.near_source_blend) query.near_source_blend = *a.near_source_blend;
+  if (a.fallback) query.fallback = *a.fallback;
   if (a.query_threads) query.query_threads = *a.query_threads == "2" ? 2 : 1;
   return query;
 }
@@ -156,7 +157,8 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
     << ", "
     << expmap::to_string(query.angle_estimator) << " angles, chords "
     << query.near_source_blend.begin << "h to " << query.near_source_blend.end
-    << "h scaled by the bend)";
+    << "h scaled by the bend"
+    << (query.fallback == expmap::Heat_fallback::none ? ", no fallback" : "") << ")";
   return d.str();
 }
 
@@ -467,11 +469,10 @@ const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
   if (!method.takes_heat_options && (a.time_factor || a.laplacian ||
                                      a.vertex_area || a.factor_precision || a.query_threads ||
-                                     a.angles || a.near_source_blend))
+                                     a.angles || a.near_source_blend || a.fallback))
     throw Usage_error(
-        "--time-factor, --laplacian, --vertex-area, "
-        "--factor-precision, --query-threads, --angles and --near-source-blend apply only to "
-        "--method heat");
+        "--time-factor, --laplacian, --vertex-area, --factor-precision, --query-threads, "
+        "--angles, --near-source-blend and --fallback apply only to --method heat");
   for (const auto& output : a.outputs) {
     const std::filesystem::path parent = std::filesystem::path(output.path).parent_path();
     if (!parent.empty() && !std::filesystem::is_directory(parent))
@@ -552,6 +553,9 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
               source_name.c_str());
   std::printf("max r:       %.6g\n", max_r);
   std::printf("flipped:     %zu of %zu triangles\n", folds.flipped, folds.total);
+  if (run.map.statistics.front_maps > 0)
+    std::printf("angles:      carried outward along the geodesic front (the heat's map folds "
+                "more here)\n");
   // Where the map is one-to-one, against the patch's own radius.
   const double fold_free = run.map.fold_free_radius.value_or(0.0);
   std::printf("fold-free:   %.6g", fold_free);

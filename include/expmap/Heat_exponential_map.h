@@ -25,6 +25,7 @@
 #include <expmap/internal/Workspace_pool.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_query.h>
+#include <expmap/internal/heat/Map_choice.h>
 #include <expmap/internal/heat/Polar_coordinates.h>
 #include <expmap/internal/heat/Query_workspace.h>
 
@@ -111,13 +112,10 @@ class Heat_exponential_map
                           const Query& query = {}) const {
     const Query& checked_query = checked(query);
     const internal::Mesh_arrays& mesh = m_indexed.arrays;
-    const int s = internal::checked_source(mesh, source);
-    const internal::heat::Source vertex = internal::heat::vertex_source(mesh, s);
-    const std::optional<internal::Vector3> reference = reference_of(query);
-    return run(context(checked_query, vertex), internal::tangent_frame(mesh, s, reference),
-               reference, patch, internal::patch_target_count(mesh, patch, s),
-               patch.kind() == Patch::Kind::vertex_set ? internal::checked_vertex_set(mesh, patch, s)
-                                                       : std::vector<int>{});
+    const internal::Checked_query q = internal::checked_query(mesh, source, patch, query);
+    const internal::heat::Source vertex = internal::heat::vertex_source(mesh, q.source);
+    return run(context(checked_query, vertex), q, reference_of(query), patch,
+               [&] { return internal::vertex_front_start(mesh, q.source, q.frame); });
   }
 
   /// Diffusion time t = time_factor * h^2.
@@ -195,11 +193,11 @@ class Heat_exponential_map
   Result compute_at_point(const internal::Point_source& point, const Patch& patch,
                           const Query& query = {}) const {
     const Query& checked_query = checked(query);
-    const internal::Checked_query q =
-        internal::checked_point_query(m_indexed.arrays, point, patch, query);
+    const internal::Mesh_arrays& mesh = m_indexed.arrays;
+    const internal::Checked_query q = internal::checked_point_query(mesh, point, patch, query);
     const internal::heat::Source source = internal::heat::point_source(point);
-    return run(context(checked_query, source), q.frame, reference_of(query), patch, q.target,
-               q.wanted);
+    return run(context(checked_query, source), q, reference_of(query), patch,
+               [&] { return internal::point_front_start(mesh, point, q.frame); });
   }
 
   internal::heat::Context context(const Query& query, const internal::heat::Source& source) const {
@@ -210,19 +208,28 @@ class Heat_exponential_map
     if (query.reference_direction) reference = *query.reference_direction;
     return reference;
   }
-  // The query from c.source, once its frame and patch are known.
-  Result run(const internal::heat::Context& c, const internal::Tangent_frame& frame,
+  // The query from c.source, once its frame and patch are known (q);
+  // `front_start()` gives the geodesic front's start around the source.
+  template <class MakeStart>
+  Result run(const internal::heat::Context& c, const internal::Checked_query& q,
              const std::optional<internal::Vector3>& reference, const Patch& patch,
-             std::size_t target, const std::vector<int>& wanted) const {
+             MakeStart front_start) const {
     const internal::Mesh_arrays& mesh = m_indexed.arrays;
     auto ws = m_workspaces.acquire([this] { return make_workspace(); });
     ws->fit_star_solves(m_factors, c.estimator);
     Solve_statistics statistics;
-    std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
-        c, frame, reference, patch, target, wanted, *ws, statistics);
-    Result result = internal::assemble_local_map(
-        mesh, static_cast<int>(mesh.to_original(c.source.lead)), entries, m_indexed.descriptors,
-        frame, c.query, ws->map_position, c.source.is_vertex());
+    std::optional<Result> heat_map;
+    try {
+      std::vector<internal::Polar_entry> entries = internal::heat::heat_polar_coordinates(
+          c, q.frame, reference, patch, q.target, q.wanted, *ws, statistics);
+      heat_map = internal::sorted_local_map(static_cast<int>(mesh.to_original(c.source.lead)),
+                                            entries, m_indexed.descriptors, q.frame,
+                                            c.source.is_vertex());
+    } catch (const Computation_error&) {
+      if (c.query.fallback != Heat_fallback::geodesic_front) throw;
+    }
+    Result result = internal::heat::sounder_map(c, q, patch, std::move(heat_map), front_start,
+                                                m_indexed.descriptors, *ws, statistics);
     result.statistics = statistics;
     return result;
   }

@@ -48,6 +48,45 @@ enum class Poisson_regularization {
 };
 
 /// \ingroup PkgExpmapRef
+/// What a heat query returns where the heat's reading of the angles at the
+/// source is blind: at the tips of thin parts, next to boundaries and
+/// holes, and across thin sheets, the heat from far-apart vertices reaches
+/// the source from nearly one direction (or around an obstacle), and the
+/// map folds over whole regions at any diffusion time (manual, section 2,
+/// "Where the heat's angles are blind").
+enum class Heat_fallback {
+  /// Where the heat's map folds a triangle over, a boundary comes within
+  /// 2 sqrt(t) of its patch, or the heat fails (not positive, or
+  /// underflowing), the query also carries the distances and angles outward
+  /// along the geodesic front (DGPC's propagation,
+  /// `Geodesic_polar_coordinates`; away from boundaries held to the heat's
+  /// map inside its fold-free disk) and returns that map if it folds fewer
+  /// triangles over (next to a boundary, where the heat's angles are biased:
+  /// at most twice as many plus 2% of the patch's), or the heat failed.
+  /// `Solve_statistics::front_maps` counts these.
+  geodesic_front,
+  /// The heat's map everywhere, as the paper computes it; a failed heat is
+  /// an error.
+  none
+};
+
+/// \ingroup PkgExpmapRef
+/// The fallback's name as the command-line program and the Python module
+/// spell it: "geodesic-front" or "none".
+inline std::string to_string(Heat_fallback fallback) {
+  return fallback == Heat_fallback::geodesic_front ? "geodesic-front" : "none";
+}
+
+/// \ingroup PkgExpmapRef
+/// The fallback named `name` (see `to_string()`).
+/// \throws Invalid_input for any other name, listing the valid ones.
+inline Heat_fallback heat_fallback_from_string(const std::string& name) {
+  for (Heat_fallback f : {Heat_fallback::geodesic_front, Heat_fallback::none})
+    if (to_string(f) == name) return f;
+  throw Invalid_input("unknown fallback '" + name + "' (valid: geodesic-front, none)");
+}
+
+/// \ingroup PkgExpmapRef
 /// The precomputation's settings of a `Heat_exponential_map`: they change
 /// the operators and factorizations its constructor builds.
 struct Heat_options {
@@ -96,6 +135,9 @@ struct Heat_query_options : Query_options {
   /// the distance: for one query at a time, as in an interactive tool
   /// (`compute_many()` already keeps every core busy).
   int query_threads = 1;
+  /// Where the heat's reading of the angles is blind, the geodesic front's
+  /// map instead (see `Heat_fallback`).
+  Heat_fallback fallback = Heat_fallback::geodesic_front;
 };
 
 /// \ingroup PkgExpmapRef

@@ -29,6 +29,14 @@ struct Solve_statistics {
   /// touched their edge (manual, section 2, step 2; only where the heat
   /// matrix is not an M-matrix).
   std::size_t candidate_widenings = 0;
+  /// Heat queries that also computed the geodesic front's map of their
+  /// patch, because the heat's folded a triangle over, came near a
+  /// boundary or failed (`Heat_query_options::fallback`).
+  std::size_t front_checks = 0;
+  /// Heat queries that returned the geodesic front's map: it folds fewer
+  /// triangles over than the heat's (next to a boundary: not clearly
+  /// more), or the heat failed.
+  std::size_t front_maps = 0;
 
   /// Adds the work of another solve (all fields).
   Solve_statistics& operator+=(const Solve_statistics& other) {
@@ -38,6 +46,8 @@ struct Solve_statistics {
     solve_seconds += other.solve_seconds;
     region_retries += other.region_retries;
     candidate_widenings += other.candidate_widenings;
+    front_checks += other.front_checks;
+    front_maps += other.front_maps;
     return *this;
   }
 };

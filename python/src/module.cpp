@@ -239,7 +239,7 @@ typename Method::Query query_argument(const char* function, py::handle reference
 /// Whether `key` names one of the heat method's query settings.
 bool is_heat_query_setting(const std::string& key) {
   for (const char* name : {"region_growth", "pruning_tolerance", "angle_estimator",
-                           "near_source_blend", "query_threads"})
+                           "near_source_blend", "query_threads", "fallback"})
     if (key == name) return true;
   return false;
 }
@@ -266,6 +266,8 @@ expmap::Heat_query_options query_argument<expmap::Heat_exponential_map<Mesh>>(
       const py::sequence pair = py::reinterpret_borrow<py::sequence>(value);
       query.near_source_blend = {number_argument(pair[0], "near_source_blend"),
                                  number_argument(pair[1], "near_source_blend")};
+    } else if (key == "fallback") {
+      query.fallback = enum_argument<expmap::Heat_fallback>(value, "fallback");
     } else if (key == "query_threads") {
       query.query_threads = static_cast<int>(std::min<std::size_t>(
           index_argument(value, "query_threads"), std::numeric_limits<int>::max()));
@@ -528,6 +530,9 @@ void bind_heat(py::module_& m) {
         "    coordinates from end on, blended between; each query scales both so\n"
         "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
         "    (0, 0) for the paper's pure heat coordinates.\n"
+        "fallback: a HeatFallback or its name (default geodesic_front: where the\n"
+        "    heat's map folds a triangle over, meets a boundary or fails, the geodesic\n"
+        "    front's (DGPC's) map if it folds fewer; 'none': the paper's map always).\n"
         "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
         "    runs beside the distance's (the same maps up to round-off, 0.79-0.97x\n"
         "    the time on patches of 750+ vertices). compute_many on more than one\n"
@@ -626,6 +631,11 @@ PYBIND11_MODULE(_expmap, m) {
       .value("log_heat_gradient", expmap::Angle_estimator::log_heat_gradient)
       .value("log_heat_quadratic_fit", expmap::Angle_estimator::log_heat_quadratic_fit)
       .value("heat_quadratic_fit", expmap::Angle_estimator::heat_quadratic_fit);
+
+  py::enum_<expmap::Heat_fallback>(m, "HeatFallback",
+                                   "What a heat query returns where the heat's angles are blind.")
+      .value("geodesic_front", expmap::Heat_fallback::geodesic_front)
+      .value("none", expmap::Heat_fallback::none);
 
   py::class_<Map_arrays>(m, "LocalMap",
                          "One local map: the patch vertices, nearest first, and their polar\n"

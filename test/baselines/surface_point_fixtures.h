@@ -501,8 +501,11 @@ void check_boundary_faces_as_accurate_as_their_corners(const char* name) {
                             << ", largest r |theta error| " << e[1] << "; its corners': "
                             << corners[0] << ", " << corners[1]);
     BOOST_TEST(map.size() > 25u);  // a quarter disk at the grid's corners
-    BOOST_TEST(e[0] <= 1.5 * corners[0]);
-    BOOST_TEST(e[1] <= 1.5 * corners[1]);
+    // Round-off aside: maps exact on the plane (DGPC's, the heat's fallback
+    // next to a boundary) are within 1e-15 of it from the point and the
+    // corners alike.
+    BOOST_TEST(e[0] <= std::max(1.5 * corners[0], 1e-12));
+    BOOST_TEST(e[1] <= std::max(1.5 * corners[1], 1e-12));
     // No fold: the fold-free disk is the whole patch.
     BOOST_TEST(*map.fold_free_radius ==
                *std::max_element(map.distance.begin(), map.distance.end()));

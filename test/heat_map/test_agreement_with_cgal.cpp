@@ -28,8 +28,10 @@ Comparison compare_with_cgal(Surface_mesh& mesh, std::size_t source,
   options.vertex_area = expmap::Vertex_area::barycentric;  // CGAL's mass matrix
   // The heat distance itself: without the source's neighbours at their edge
   // lengths (Near_source_blend), which CGAL does not do.
+  // Nor the geodesic front's map where the heat's would fold.
   expmap::Heat_query_options query;
   query.near_source_blend = {0, 0};
+  query.fallback = expmap::Heat_fallback::none;
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
   const auto map = heat.compute_by_index(source, expmap::Patch::fraction(1.0), query);
 

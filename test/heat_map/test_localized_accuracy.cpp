@@ -23,12 +23,16 @@ struct Cutoff_error {
   double mean_inner = 0, max_inner = 0, mean_all = 0, max_all = 0;  // relative to the radius
 };
 
+// The heat's own distances, local and whole (the geodesic front's fallback
+// would replace either where its map folds or meets the boundary).
 template <class Heat>
 Cutoff_error cutoff_error(const Heat& heat, std::size_t source, const expmap::Patch& patch) {
-  const auto whole = heat.compute_by_index(source, expmap::Patch::fraction(1.0));
+  expmap::Heat_query_options heat_only;
+  heat_only.fallback = expmap::Heat_fallback::none;
+  const auto whole = heat.compute_by_index(source, expmap::Patch::fraction(1.0), heat_only);
   std::unordered_map<std::size_t, double> reference;
   for (std::size_t i = 0; i < whole.size(); ++i) reference[whole.indices[i]] = whole.distance[i];
-  const auto local = heat.compute_by_index(source, patch);
+  const auto local = heat.compute_by_index(source, patch, heat_only);
   const double radius = local.distance.back();
   const std::size_t inner = static_cast<std::size_t>(0.9 * static_cast<double>(local.size()));
   Cutoff_error e;

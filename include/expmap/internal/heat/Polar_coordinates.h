@@ -60,14 +60,31 @@ inline Near_source_zone near_source_zone(const Context& c, int s, const Vector3&
   return zone;
 }
 
-// The distance of v at heat distance r. A neighbour of the source takes its
+/// Next to the source a chord stands in for the geodesic only where it is
+/// about as long: one much shorter than the heat distance cuts through
+/// space, from one sheet of a thin part to the other (a plate's two faces
+/// around its rim), and its direction is not the geodesic's. Where the
+/// blend ends the normal has turned by at most 1 rad (`blend_normal_turn`),
+/// so a chord that follows the surface is at least 0.96 of its arc.
+constexpr double min_chord_over_distance = 0.8;
+
+// The heat's weight in the coordinates of v at heat distance r: the zone's,
+// or all of it where the chord from `from` (the source's position) cuts
+// through space. `on_surface`: v's chord is an edge, or lies in a face.
+inline double near_source_heat_weight(const Context& c, const Vector3& from, int v, double r,
+                                      bool on_surface, const Near_source_zone& zone) {
+  const double w = zone.heat_weight(r);
+  if (w == 1.0 || on_surface) return w;
+  return norm(c.mesh.point[v] - from) >= min_chord_over_distance * r ? w : 1.0;
+}
+
+// The distance of v at heat distance r and heat weight w. A neighbour of the source takes its
 // edge's length (the exact polyhedral distance), blended into r like the
 // angle: the heat distance is off by about 0.1 h anywhere, a tenth of a
 // neighbour's distance. Farther vertices keep r: chords there cut through
 // space on coarse curved meshes and fold triangles over.
-inline double blended_distance(const Context& c, int s, int v, double r,
-                               const Source_one_ring& ring, const Near_source_zone& zone) {
-  const double w = zone.heat_weight(r);
+inline double blended_distance(const Context& c, int s, int v, double r, double w,
+                               const Source_one_ring& ring) {
   if (w == 1.0 || ring.position(v) < 0) return r;
   const double edge = norm(c.mesh.point[v] - c.mesh.point[s]);
   return w * r + (1 - w) * edge;
@@ -135,14 +152,25 @@ inline double heat_at_source(const Context& c, const Star_gradient& star, const 
   return sum;
 }
 
+// The (u, v) of `entry`: from its heat direction where that is its angle
+// (no sine and cosine needed), else from the angle.
+inline std::array<double, 2> uv_of(const Polar_entry& entry, double heat_weight,
+                                   const std::array<double, 2>& direction) {
+  const double length = std::hypot(direction[0], direction[1]);
+  if (heat_weight == 1.0 && length > 0)
+    return {{entry.distance * direction[0] / length, entry.distance * direction[1] / length}};
+  return {{entry.distance * std::cos(entry.angle), entry.distance * std::sin(entry.angle)}};
+}
+
 // The polar coordinates of the patch (region positions `order`, the source
-// first) in original vertex indices, the source left out. `corners`: a
+// first) in original vertex indices, the source left out; their (u, v) in
+// ws.patch_uv (the source's too), for the fold check of step 8. `corners`: a
 // point source's (empty for a vertex).
 inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangent_frame& frame,
                                                   const Star_gradient& star,
                                                   const std::vector<Point_corner>& corners,
                                                   const std::vector<std::size_t>& order,
-                                                  const Workspace& ws) {
+                                                  Workspace& ws) {
   const Angle_estimator estimator = c.estimator;
   const bool linear = is_linear_in_heat(estimator);
   const std::size_t width = star_columns(c, star);
@@ -154,6 +182,21 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangen
       at_vertex ? near_source_zone(c, s, frame.normal) : point_zone(corners);
   std::vector<double> values(star.vertices.size());
   std::vector<double> both(width);  // the Neumann and Dirichlet heat, summed
+  // The heat's weight in each patch vertex's coordinates.
+  Source_one_ring ring;
+  if (at_vertex) ring = source_one_ring(c.mesh, s, frame);
+  const Vector3 from = at_vertex ? c.mesh.point[s] : c.source.position;
+  std::vector<double> weight(order.size());
+  for (std::size_t p = 0; p < order.size(); ++p) {
+    const int v = ws.region[order[p]];
+    bool on_surface = false;
+    if (at_vertex)
+      on_surface = v == s || ring.position(v) >= 0;
+    else
+      for (const Point_corner& corner : corners)
+        on_surface = on_surface || v == corner.vertex || corner.ring.position(v) >= 0;
+    weight[p] = near_source_heat_weight(c, from, v, ws.potential[order[p]], on_surface, zone);
+  }
   // The heat directions of the patch vertices (where the blend wants them),
   // then, for the quadratic fit, their cubic leak removed for all at once.
   std::vector<std::array<double, 2>> direction(order.size());
@@ -178,7 +221,7 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangen
                               std::to_string(c.mesh.to_original(v)) + " (distance " +
                               std::to_string(ws.potential[i]) +
                               "); increase the time factor or request a smaller patch");
-    if (v == s || zone.heat_weight(ws.potential[i]) == 0.0) continue;  // no heat direction needed
+    if (v == s || weight[p] == 0.0) continue;  // no heat direction needed
     direction[p] = heat_direction(c, at_source, star, h, values);
     if (estimator == Angle_estimator::heat_quadratic_fit && at_source > 0) {
       leaking.push_back(direction[p]);
@@ -191,17 +234,19 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangen
 
   std::vector<Polar_entry> entries;
   entries.reserve(order.size());
+  ws.patch_uv.clear();
   if (at_vertex) {
-    const Source_one_ring ring = source_one_ring(c.mesh, s, frame);
+    ws.patch_uv.push_back({s, {{0.0, 0.0}}});
     for (std::size_t p = 0; p < order.size(); ++p) {
       const std::size_t i = order[p];
       const int v = ws.region[i];
       if (v == s) continue;
       const double r = ws.potential[i];
       entries.push_back(
-          {static_cast<int>(c.mesh.to_original(v)), blended_distance(c, s, v, r, ring, zone),
-           polar_angle(zone.heat_weight(r), direction[p],
+          {static_cast<int>(c.mesh.to_original(v)), blended_distance(c, s, v, r, weight[p], ring),
+           polar_angle(weight[p], direction[p],
                        [&] { return near_source_angle(c, s, v, frame, ring); })});
+      ws.patch_uv.push_back({v, uv_of(entries.back(), weight[p], direction[p])});
     }
     return entries;
   }
@@ -210,10 +255,11 @@ inline std::vector<Polar_entry> polar_coordinates(const Context& c, const Tangen
     const std::size_t i = order[p];
     const int v = ws.region[i];
     const double r = ws.potential[i];
-    const double w = zone.heat_weight(r);
+    const double w = weight[p];
     entries.push_back({static_cast<int>(c.mesh.to_original(v)),
                        w == 1.0 ? r : w * r + (1 - w) * near.distance(v, r),
                        polar_angle(w, direction[p], [&] { return near.angle(v); })});
+    ws.patch_uv.push_back({v, uv_of(entries.back(), w, direction[p])});
   }
   return entries;
 }

@@ -8,13 +8,17 @@
 // thread (see Workspace_pool).
 
 #include <expmap/Heat_options.h>
+#include <expmap/internal/Geodesic_front.h>
+#include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_source.h>
 
+#include <array>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace expmap {
@@ -124,6 +128,20 @@ struct Workspace {
   Star_solve boundary_star;   // its Dirichlet twin, where the region meets a boundary
   bool meets_boundary = false;
   Star_solve region_star;     // the star solve of a second thread, on the region
+
+  // Step 7: each patch vertex (as stored, a vertex source first) and its
+  // (u, v), for step 8's fold check.
+  struct Patch_uv {
+    int vertex;
+    std::array<double, 2> uv;
+  };
+  std::vector<Patch_uv> patch_uv;
+
+  // Step 8: the geodesic front's map, made on the first query that needs
+  // it (most workspaces never do).
+  std::unique_ptr<Geodesic_front> front;
+  std::vector<Polar_entry> front_entries;
+  Front_anchor anchor;  // the heat's map the front is held to
 };
 
 }  // namespace heat
