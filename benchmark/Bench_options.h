@@ -31,7 +31,9 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
                            data/meshes/refined_elephant.off)
   --cache-dir DIR          where elephant_loopN.off is cached (default: the
                            directory of the mesh to subdivide)
-  --methods LIST           comma-separated: heat, heat-full, dem, dgpc, exact
+  --methods LIST           comma-separated: heat, heat-paper (heat without its
+                           geodesic-front fallback, on the same object),
+                           heat-full, dem, dgpc, exact
                            (default: heat,heat-full)
   --fractions LIST         patch fractions in (0,1] (default:
                            0.01,0.02,0.05,0.1,0.25)
@@ -118,7 +120,8 @@ inline std::size_t parse_count(const std::string& option, const std::string& tex
 /// \throws Usage_error with a message for the user.
 inline Bench_options parse_bench_options(int argc, char** argv) {
   Bench_options o;
-  const std::vector<std::string> known_methods{"heat", "heat-full", "dem", "dgpc", "exact"};
+  const std::vector<std::string> known_methods{"heat",  "heat-paper", "heat-full",
+                                               "dem",   "dgpc",       "exact"};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {

@@ -34,14 +34,22 @@ class Method_set {
   explicit Method_set(const Mesh& mesh) : m_mesh(mesh) {}
 
   void add_heat(const std::string& key, const std::string& label, double time_factor,
-                expmap::Laplacian_mode mode = expmap::Laplacian_mode::direct) {
+                expmap::Laplacian_mode mode = expmap::Laplacian_mode::direct,
+                const expmap::Heat_query_options& query = {}) {
     expmap::Heat_options options;
     options.time_factor = time_factor;
     options.laplacian = mode;
+    add_heat(key, label, options, query);
+  }
+
+  void add_heat(const std::string& key, const std::string& label,
+                const expmap::Heat_options& options, const expmap::Heat_query_options& query) {
     const auto start = std::chrono::steady_clock::now();
     auto heat = std::make_shared<expmap::Heat_exponential_map<Mesh>>(m_mesh, options);
     push(key, label, seconds_since(start),
-         [heat](std::size_t s, const expmap::Patch& p) { return heat->compute_by_index(s, p); },
+         [heat, query](std::size_t s, const expmap::Patch& p) {
+           return heat->compute_by_index(s, p, query);
+         },
          heat);
   }
 

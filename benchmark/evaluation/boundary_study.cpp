@@ -28,6 +28,8 @@
 //   --interior N        interior sources per mesh (default 12; 0: none)
 //   --max-vertices N    skip meshes with more vertices (default: none);
 //                       the exact map costs most on the big ones
+//   --heat-fallback F   the heat method's fallback: geodesic-front (the
+//                       default) or none (the paper's map everywhere)
 //   --csv FILE          per-map rows (default boundary_study.csv)
 //   --summary-csv FILE  the summary rows as CSV too (default: none)
 
@@ -69,6 +71,7 @@ struct Options {
   std::size_t sources = 12;
   std::size_t interior = 12;
   std::size_t max_vertices = 0;  // 0: no limit
+  expmap::Heat_fallback heat_fallback = expmap::Heat_fallback::geodesic_front;
   fs::path csv = "boundary_study.csv";
   fs::path summary_csv;
 };
@@ -76,7 +79,7 @@ struct Options {
 const char* usage_text() {
   return "usage: expmap-boundary-study [--meshes DIR] [--mesh NAME ...] [--fraction F]\n"
          "                             [--sources N] [--interior N] [--max-vertices N]\n"
-         "                             [--csv FILE] [--summary-csv FILE]\n";
+         "                             [--heat-fallback F] [--csv FILE] [--summary-csv FILE]\n";
 }
 
 Options parse(int argc, char** argv) {
@@ -93,6 +96,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--sources") o.sources = std::stoul(value());
     else if (a == "--interior") o.interior = std::stoul(value());
     else if (a == "--max-vertices") o.max_vertices = std::stoul(value());
+    else if (a == "--heat-fallback") o.heat_fallback = expmap::heat_fallback_from_string(value());
     else if (a == "--csv") o.csv = value();
     else if (a == "--summary-csv") o.summary_csv = value();
     else throw std::invalid_argument("unknown argument " + a);
@@ -132,10 +136,12 @@ struct Measured_map {
 /// compared with it.
 const std::vector<std::string> method_keys = {"exact", "heat", "dem", "dgpc"};
 
-Method_set make_methods(const Mesh& mesh) {
+Method_set make_methods(const Mesh& mesh, expmap::Heat_fallback fallback) {
   Method_set set(mesh);
   set.add<expmap::Exact_exponential_map>("exact", "exact");
-  set.add<expmap::Heat_exponential_map>("heat", "heat");
+  expmap::Heat_query_options query;
+  query.fallback = fallback;
+  set.add_heat("heat", "heat", expmap::Heat_options(), query);
   set.add<expmap::Discrete_exponential_map>("dem", "DEM");
   set.add<expmap::Geodesic_polar_coordinates>("dgpc", "DGPC");
   return set;
@@ -471,7 +477,7 @@ int main(int argc, char** argv) {
     }
     std::optional<Method_set> set;
     try {
-      set.emplace(make_methods(mesh));
+      set.emplace(make_methods(mesh, options.heat_fallback));
     } catch (const expmap::Invalid_input& e) {
       skipped.push_back(name + ": a method refuses it: " + e.what());
       continue;
