@@ -11,13 +11,18 @@
 // The meshes: lion-head.off (one boundary loop of long edges at the neck),
 // head.off (three loops: the neck and two eyes), mushroom.off (open at the
 // foot of its stem), cylinder_locally_refined.off (an open tube, two loops,
-// a mesh refined in one band). holes.off, also a surface with holes, misses
-// the flip and angle targets one and two rings in (doc/results.md,
-// section 4). The sources, per mesh, from Boundary_sources.h:
-// 4 boundary vertices spread along the loops, the nearest vertex one ring
-// in from each, and as a control the nearest vertex 6 rings in (an interior
-// source whose 5% patch may still reach the boundary). Patches are 5% of
-// the mesh, as in the study; the exact maps take a few seconds in all.
+// a mesh refined in one band), blade.off (a thin plate: two sheets meeting
+// at a rim), holes.off (a sheet with round holes), and the CAD parts
+// ALSTOM_TEST4.off (a strip where the heat is not positive at some sources)
+// and boeing.off (holes shorter than the heat's reach; no vertex is two
+// rings from its boundary). The paper's map misses the targets on all but
+// lion-head in expmap-boundary-study (doc/results.md, section 4); the
+// geodesic front's fallback is what meets them. The sources, per mesh,
+// from Boundary_sources.h: 4 boundary vertices spread along the loops, the
+// nearest vertex one and two rings in from each, and as a control the
+// nearest vertex 6 rings in (an interior source whose 5% patch may still
+// reach the boundary). Patches are 5% of the mesh, as in
+// the study; the exact maps take a few seconds in all.
 
 #include <expmap/Exact_exponential_map.h>
 #include <expmap/Geodesic_polar_coordinates.h>
@@ -46,19 +51,21 @@ namespace ev = expmap_evaluation;
 using Mesh = expmap_test::Surface_mesh;
 using Map = expmap::Local_map<Mesh::Vertex_index>;
 
-const std::vector<std::string> boundary_meshes = {"lion-head.off", "head.off", "mushroom.off",
-                                                   "cylinder_locally_refined.off"};
+const std::vector<std::string> boundary_meshes = {
+    "lion-head.off", "head.off",         "mushroom.off", "cylinder_locally_refined.off",
+    "blade.off",     "holes.off",        "ALSTOM_TEST4.off", "boeing.off"};
 constexpr std::size_t boundary_sources_per_mesh = 4;
 constexpr int interior_ring = 6;
 constexpr double patch_fraction = 0.05;
 
 /// Where a source lies: which targets it is checked against.
-enum class Source_kind { boundary, one_ring_in, interior };
+enum class Source_kind { boundary, one_ring_in, two_rings_in, interior };
 
 std::string to_string(Source_kind kind) {
   switch (kind) {
     case Source_kind::boundary: return "boundary";
     case Source_kind::one_ring_in: return "one ring in";
+    case Source_kind::two_rings_in: return "two rings in";
     case Source_kind::interior: return "interior";
   }
   return "";
@@ -85,6 +92,8 @@ std::vector<std::pair<std::size_t, Source_kind>> test_sources(const Mesh& mesh) 
     sources.push_back({b, Source_kind::boundary});
     if (const auto v = ev::nearest_at_ring(graph, hops, b, 1))
       sources.push_back({*v, Source_kind::one_ring_in});
+    if (const auto v = ev::nearest_at_ring(graph, hops, b, 2))
+      sources.push_back({*v, Source_kind::two_rings_in});
     if (const auto v = ev::nearest_at_ring(graph, hops, b, interior_ring))
       sources.push_back({*v, Source_kind::interior});
   }
@@ -156,9 +165,18 @@ BOOST_AUTO_TEST_CASE(best_rotation_angle_error_forgives_rotations_not_reflection
 // The reference checked against an independent method: DGPC handles
 // boundaries, so it must agree with the exact map at these very sources.
 // If this fails, the exact map or the source choice is wrong, not heat.
+// (On the other meshes DGPC folds where the exact map does too: behind
+// holes, around a plate's rim.)
+const std::vector<std::string> smooth_boundary_meshes = {"lion-head.off", "head.off",
+                                                         "mushroom.off",
+                                                         "cylinder_locally_refined.off"};
+
 BOOST_AUTO_TEST_CASE(dgpc_agrees_with_the_exact_map_at_boundary_sources) {
   for (const Mesh_maps& mesh : measured_meshes()) {
-    BOOST_TEST(mesh.sources.size() >= 2 * boundary_sources_per_mesh, mesh.name);
+    BOOST_TEST(mesh.sources.size() >= boundary_sources_per_mesh, mesh.name);
+    if (std::find(smooth_boundary_meshes.begin(), smooth_boundary_meshes.end(), mesh.name) ==
+        smooth_boundary_meshes.end())
+      continue;
     for (const Source_maps& s : mesh.sources) {
       BOOST_TEST_CONTEXT(mesh.name << ", " << to_string(s.kind) << " source " << s.vertex
                                    << ", dgpc: " << describe(s.agreement.dgpc)) {
@@ -170,22 +188,16 @@ BOOST_AUTO_TEST_CASE(dgpc_agrees_with_the_exact_map_at_boundary_sources) {
   }
 }
 
-// With only the Neumann heat, a source on the boundary gave mirrored or
-// collapsed maps (509 of lion-head's 734 patch triangles turned over at
-// source 2, median angle errors of 1.2 rad). Every kind of source meets the
-// flip and mirror targets; one ring in and at the control sources the angle
-// target too. On the boundary itself the angles stay above it on two of
-// these meshes (median 0.06 rad on head, 0.11 on cylinder_locally_refined,
-// against 0.013-0.018 at their interior sources; doc/results.md, section
-// 4): there the bound is the level reached, far below the Neumann heat's
-// (medians of 0.24 rad on head, 0.65 on cylinder_locally_refined and 1.2
-// on lion-head at their boundary sources).
-constexpr double boundary_source_angle_bound = 0.15;
-
+// Every kind of source meets the flip, mirror and angle targets on every
+// mesh. The paper's map alone misses them on the boundary of seven of these
+// meshes (blade: 548 triangles flipped against DGPC's 91, holes: median
+// 0.11 rad against 0.011; doc/results.md, section 4) and fails on some
+// sources of ALSTOM_TEST4 and boeing; the geodesic front's fallback
+// (Heat_fallback) is what meets them.
 BOOST_AUTO_TEST_CASE(heat_meets_the_boundary_targets_against_dgpc_and_the_exact_map) {
   for (const Mesh_maps& mesh : measured_meshes()) {
-    for (Source_kind kind :
-         {Source_kind::boundary, Source_kind::one_ring_in, Source_kind::interior}) {
+    for (Source_kind kind : {Source_kind::boundary, Source_kind::one_ring_in,
+                             Source_kind::two_rings_in, Source_kind::interior}) {
       std::vector<ev::Heat_and_dgpc> sources;
       for (const Source_maps& s : mesh.sources) {
         if (s.kind != kind) continue;
@@ -196,18 +208,16 @@ BOOST_AUTO_TEST_CASE(heat_meets_the_boundary_targets_against_dgpc_and_the_exact_
           BOOST_TEST(!ev::collapsed(s.agreement), "heat > 30% flipped where DGPC < 5%");
         }
       }
+      if (sources.empty()) continue;  // no vertex that many rings in
       const ev::Boundary_quality q = ev::boundary_quality(sources);
       BOOST_TEST_CONTEXT(mesh.name << ", " << q.sources << " " << to_string(kind) << " sources") {
         BOOST_TEST(q.heat_flipped <= q.flip_limit,
                    "heat flips " << q.heat_flipped << " triangles, DGPC " << q.dgpc_flipped
                                  << ", limit " << q.flip_limit);
-        const double angle_limit =
-            kind == Source_kind::boundary ? std::max(q.angle_limit, boundary_source_angle_bound)
-                                          : q.angle_limit;
-        BOOST_TEST(q.heat_angle_error <= angle_limit,
+        BOOST_TEST(q.heat_angle_error <= q.angle_limit,
                    "heat's median mean |dtheta| " << q.heat_angle_error << " rad, DGPC's "
                                                   << q.dgpc_angle_error << ", limit "
-                                                  << angle_limit);
+                                                  << q.angle_limit);
       }
     }
   }
