@@ -2,6 +2,7 @@
 # Renders the viewer's pictures in doc/figures (viewer.png, viewer_compare.png)
 # in headless Chromium from the build in build/ (or EXPMAP_BUILD_DIR):
 #   scripts/viewer-screenshots.sh [MESH] [--point X,Y,Z] [--method M] [--compare M] [--fraction F]
+#                                 [--name NAME]   (writes NAME.png, NAME_compare.png)
 # The default: armadillo, the source on its snout, heat beside DGPC.
 set -euo pipefail
 cd "$(dirname "$0")/.."
