@@ -8,11 +8,11 @@
 // thread (see Workspace_pool).
 
 #include <expmap/Heat_options.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_source.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <cstddef>
 #include <vector>

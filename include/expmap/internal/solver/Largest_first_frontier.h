@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
-#define EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H
+#define EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H
 
 #include <algorithm>
 #include <cstddef>
@@ -118,4 +118,4 @@ class Largest_first_frontier {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
-#define EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
+#ifndef EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H
+#define EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H
 
-#include <expmap/internal/Dense_row_kernels.h>
-#include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/solver/Dense_row_kernels.h>
+#include <expmap/internal/solver/Supernodal_factor.h>
 
 #include <array>
 #include <cmath>
@@ -465,4 +465,4 @@ class Supernode_kernels {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
+#endif  // EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H

@@ -1,17 +1,17 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LOCALIZED_CHOLESKY_SOLVER_H
-#define EXPMAP_INTERNAL_LOCALIZED_CHOLESKY_SOLVER_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LOCALIZED_CHOLESKY_SOLVER_H
+#define EXPMAP_INTERNAL_SOLVER_LOCALIZED_CHOLESKY_SOLVER_H
 
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Largest_first_frontier.h>
-#include <expmap/internal/Localized_solve_workspace.h>
-#include <expmap/internal/Low_rank_rows_below.h>
-#include <expmap/internal/Supernodal_factor.h>
-#include <expmap/internal/Supernode_kernels.h>
-#include <expmap/internal/Supernode_tree.h>
+#include <expmap/internal/solver/Largest_first_frontier.h>
+#include <expmap/internal/solver/Localized_solve_workspace.h>
+#include <expmap/internal/solver/Low_rank_rows_below.h>
+#include <expmap/internal/solver/Supernodal_factor.h>
+#include <expmap/internal/solver/Supernode_kernels.h>
+#include <expmap/internal/solver/Supernode_tree.h>
 
 #include <algorithm>
 #include <chrono>
@@ -582,4 +582,4 @@ class Localized_cholesky_solver {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LOCALIZED_CHOLESKY_SOLVER_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LOCALIZED_CHOLESKY_SOLVER_H

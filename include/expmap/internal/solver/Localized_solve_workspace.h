@@ -1,11 +1,11 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
-#define EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H
+#define EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H
 
-#include <expmap/internal/Huge_page_allocator.h>
-#include <expmap/internal/Largest_first_frontier.h>
-#include <expmap/internal/Supernode_kernels.h>
+#include <expmap/internal/solver/Huge_page_allocator.h>
+#include <expmap/internal/solver/Largest_first_frontier.h>
+#include <expmap/internal/solver/Supernode_kernels.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -120,4 +120,4 @@ class Localized_solve_workspace {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H
