@@ -9,30 +9,24 @@
 #include <expmap/internal/solver/Largest_first_frontier.h>
 #include <expmap/internal/solver/Localized_solve_workspace.h>
 #include <expmap/internal/solver/Low_rank_rows_below.h>
+#include <expmap/internal/solver/Pruning_threshold.h>
+#include <expmap/internal/solver/Rhs_entry.h>
 #include <expmap/internal/solver/Supernodal_factor.h>
 #include <expmap/internal/solver/Supernode_kernels.h>
 #include <expmap/internal/solver/Supernode_tree.h>
+#include <expmap/internal/solver/Timed_solve.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 namespace expmap {
 namespace internal {
-
-/// One entry of a sparse right-hand side: `value` at `row` of column `column`.
-struct Rhs_entry {
-  int row;
-  int column;
-  double value;
-};
 
 /// Solves A X = B for a block of sparse right-hand sides with a prefactored
 /// A = P^T L D L^T P, computing X only where it is needed (Herholz, Davis &
@@ -129,34 +123,10 @@ class Localized_cholesky_solver {
 
   /// Solves A X = B where B has `width` columns given by its nonzero
   /// `entries` (rows of A, duplicates are summed), and writes X(rows[i], c)
-  /// to `out[i * width + c]`. With `drop_below` = 0 the solve is exact: the
-  /// same numbers as a full solve.
-  ///
-  /// With `drop_below` > 0 the solve is pruned: an entry of the forward
-  /// solution y (L y = P b) or of the back solution x whose magnitude is at
-  /// most `drop_below` in every column of the block is not propagated: the
-  /// entries it would update are computed as if it were zero (its own value
-  /// is still computed and returned if requested).
-  ///
-  /// Why it pays: the dense separators at the top of the elimination tree
-  /// span the whole mesh, and every solve walks them; but the solution of a
-  /// well-conditioned system such as the heat system M + tL (and the
-  /// forward solution y with it) decays exponentially with the distance from
-  /// the right-hand side, so on most of a separator's columns it is far
-  /// below anything the caller reads, and the work of those columns
-  /// (a column of L each) is skipped.
-  ///
-  /// Choosing `drop_below`: an entry below the threshold changes the
-  /// returned values by about itself times the entries of L^-1 (at most
-  /// about 1 relative for the heat system, whose inverse factor is
-  /// nonnegative and diagonally dominated). To keep every returned value
-  /// accurate to a relative tolerance tau, pass tau times the smallest
-  /// magnitude among the requested rows (or a lower bound of it, e.g. from a
-  /// previous solve); `smallest_magnitude()` then checks the choice: the
-  /// pruning was consistent if drop_below <= tau * smallest_magnitude(out)
-  /// up to rounding (the pruned values are within tau of the full ones).
-  /// Systems whose solution does not decay (the Poisson system of the
-  /// distance step) gain nothing.
+  /// to `out[i * width + c]`. Blocks wider than `ws.max_width()` are solved
+  /// in blocks of that width. With `drop_below` = 0 the solve is exact: the
+  /// same numbers as a full solve; with `drop_below` > 0 it is pruned
+  /// (Pruning_threshold.h: what that means, why it pays, how to choose it).
   /// \pre drop_below >= 0 and finite (else std::invalid_argument).
   /// \returns what the solve touched.
   Solve_statistics solve(const std::vector<Rhs_entry>& entries, int width,
@@ -195,7 +165,7 @@ class Localized_cholesky_solver {
                           Workspace& ws) const {
     if (ws.m_open_width == 0)
       throw std::logic_error("Localized_cholesky_solver: extend() without an extendable solve");
-    return timed([&] {
+    return timed_solve([&] {
       return Supernode_kernels::with_width(ws.m_open_width, [&](auto width) {
         return extend_block<decltype(width)::value>(rows, row_count, out, ws);
       });
@@ -213,11 +183,10 @@ class Localized_cholesky_solver {
   }
 
   /// Smallest |value| among `count` values (infinity if there are none): the
-  /// scale a pruned solve's `drop_below` is checked against.
+  /// scale a pruned solve's `drop_below` is checked against
+  /// (Pruning_threshold.h).
   static double smallest_magnitude(const double* values, std::size_t count) {
-    double smallest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < count; ++i) smallest = std::min(smallest, std::abs(values[i]));
-    return smallest;
+    return internal::smallest_magnitude(values, count);
   }
 
   /// The `count` largest values of the solution x of A x = b in the parts
@@ -306,7 +275,7 @@ class Localized_cholesky_solver {
       if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
         throw std::invalid_argument(
             "Localized_cholesky_solver: solve_largest needs one nonnegative column");
-    return timed([&] {
+    return timed_solve([&] {
       prepare(ws);
       const std::uint32_t s = ws.next_stamp();
       double* y = ws.m_block;
@@ -335,22 +304,7 @@ class Localized_cholesky_solver {
       throw std::logic_error(
           "Localized_cholesky_solver: extend_largest() or extend_at_least() without an open "
           "solve_largest() or solve_at_least()");
-    return timed([&] { return largest_first(stop, rows, values, ws); });
-  }
-
-  // The statistics of solve(), their time measured.
-  template <class Solve>
-  static Solve_statistics timed(Solve solve) {
-    const auto start = std::chrono::steady_clock::now();
-    Solve_statistics stats = solve();
-    stats.solve_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
-  }
-
-  static void check_drop_below(double drop_below) {
-    if (!(drop_below >= 0) || !std::isfinite(drop_below))
-      throw std::invalid_argument("Localized_cholesky_solver: drop_below must be >= 0 and finite");
+    return timed_solve([&] { return largest_first(stop, rows, values, ws); });
   }
 
   // solve_extendable: one block, kept in `ws`. Pruned if drop_below > 0,
@@ -362,7 +316,7 @@ class Localized_cholesky_solver {
       throw std::invalid_argument(
           "Localized_cholesky_solver: an extendable solve's width must be from 1 to its "
           "workspace's max_width()");
-    return timed([&] {
+    return timed_solve([&] {
       prepare(ws);
       return dispatch(entries, width, rows, row_count, out, ws, drop_below, /*keep=*/true);
     });
@@ -372,7 +326,7 @@ class Localized_cholesky_solver {
                                    const int* rows, std::size_t row_count, double* out,
                                    Workspace& ws, double drop_below) const {
     if (width < 1) throw std::invalid_argument("Localized_cholesky_solver: width < 1");
-    return timed([&] {
+    return timed_solve([&] {
       prepare(ws);
       const int block = ws.max_width();
       if (width <= block) return dispatch(entries, width, rows, row_count, out, ws, drop_below);
