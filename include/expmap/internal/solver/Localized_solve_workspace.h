@@ -17,6 +17,7 @@ namespace expmap {
 namespace internal {
 
 class Localized_cholesky_solver;
+class Localized_substitution;
 
 /// Per-thread scratch memory of a `Localized_cholesky_solver`
 /// (`Localized_cholesky_solver::Workspace`): a dense block of n rows by the
@@ -57,6 +58,7 @@ class Localized_solve_workspace {
 
  private:
   friend class Localized_cholesky_solver;
+  friend class Localized_substitution;
 
   static int block_width_for(int max_width) {
     if (max_width < 1)
