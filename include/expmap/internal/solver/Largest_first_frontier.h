@@ -15,7 +15,7 @@ namespace expmap {
 namespace internal {
 
 /// Where a back substitution that visits the elimination tree largest
-/// first (`Localized_cholesky_solver::solve_largest`) goes next, and when it
+/// first (`Largest_first_search`) goes next, and when it
 /// may stop: the supernodes not visited yet whose parents were, each with
 /// a bound on the values of its subtree, and the values solved so far.
 ///

@@ -7,6 +7,7 @@
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/solver/Largest_first_frontier.h>
+#include <expmap/internal/solver/Largest_first_search.h>
 #include <expmap/internal/solver/Localized_solve_workspace.h>
 #include <expmap/internal/solver/Localized_substitution.h>
 #include <expmap/internal/solver/Low_rank_rows_below.h>
@@ -16,10 +17,7 @@
 #include <expmap/internal/solver/Timed_solve.h>
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
-#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -36,7 +34,8 @@ namespace internal {
 /// to choose it) and returns what it touched, timed. A solve can be kept
 /// open and extended to more rows (`solve_extendable()`, `extend()`), and
 /// on an M-matrix the largest values of the solution can be found without
-/// solving the rest (`solve_largest()`, `solve_at_least()`).
+/// solving the rest (`solve_largest()`, `solve_at_least()`;
+/// `Largest_first_search`).
 ///
 /// The object is immutable after construction; per-query scratch lives in a
 /// `Workspace`, so many threads can solve at once with one workspace each.
@@ -191,35 +190,17 @@ class Localized_cholesky_solver {
   }
 
   /// The `count` largest values of the solution x of A x = b in the parts
-  /// of A (its connected components) that b touches, found by a back
-  /// substitution that
-  /// visits the elimination tree largest first and stops where nothing
-  /// larger can remain; the values are those of a full solve. Writes every
-  /// row it solved (the supernodes visited, in whole) to `rows` and its
-  /// value to `values` (cleared first), in the order solved: the `count`
-  /// largest among them (or all of those parts, if they have fewer rows)
-  /// are the largest there. The solve stays open for `extend_largest()`
-  /// (and `extend()`) until the next solve on `ws` or `release()`.
-  ///
-  /// Why it may stop early: A must be an M-matrix with nonnegative row sums
-  /// (positive diagonal, no positive off-diagonal entry, such as the heat
-  /// matrix M + tL of an intrinsic Delaunay Laplacian) and b nonnegative
-  /// with one column. The rows of a supernode's subtree S that b does not
-  /// touch satisfy A_SS x_S = -A_SR x_R, where R, the rows of A coupled to
-  /// S from outside, lie among the supernode's rows below its diagonal
-  /// block (the structure of L); -A_SS^-1 A_SR is nonnegative with row
-  /// sums at most 1, so x on S is at most the largest x on those rows
-  /// (the discrete maximum principle). A subtree whose rows below hold
-  /// nothing larger than the `count`-th value found holds nothing larger
-  /// either, and is not visited. The caller vouches for the matrix: this
-  /// is not checked here.
-  ///
-  /// With `drop_below` > 0 both substitutions are pruned as `solve()`
-  /// prunes them: pruning only lowers the values of a nonnegative inverse,
-  /// by about `drop_below` at most, so the bounds and the order of the
-  /// values are those of a full solve but for ties within that.
-  /// \pre every entry of b nonnegative, in column 0; drop_below >= 0 and
-  /// finite.
+  /// of A (its connected components) that b touches, by a back substitution
+  /// that visits the elimination tree largest first and stops where nothing
+  /// larger can remain (`Largest_first_search`: why, and what A must be);
+  /// the values are those of a full solve. Writes every row it solved (the
+  /// supernodes visited, in whole) to `rows` and its value to `values`
+  /// (cleared first), in the order solved: the `count` largest among them
+  /// (or all of those parts, if they have fewer rows) are the largest
+  /// there. The solve stays open for `extend_largest()` (and `extend()`)
+  /// until the next solve on `ws` or `release()`. Pruned if `drop_below` > 0.
+  /// \pre A an M-matrix with nonnegative row sums (not checked); every
+  /// entry of b nonnegative, in column 0; drop_below >= 0 and finite.
   Solve_statistics solve_largest(const std::vector<Rhs_entry>& entries, std::size_t count,
                                  std::vector<int>& rows, std::vector<double>& values,
                                  Workspace& ws, double drop_below = 0) const {
@@ -235,7 +216,7 @@ class Localized_cholesky_solver {
   Solve_statistics solve_at_least(const std::vector<Rhs_entry>& entries, double threshold,
                                   std::vector<int>& rows, std::vector<double>& values,
                                   Workspace& ws, double drop_below = 0) const {
-    check_threshold(threshold);
+    Largest_first_search::check_threshold(threshold);
     return start_largest_first(entries, Stop{Largest_first_frontier::no_count, threshold}, rows,
                                values, ws, drop_below);
   }
@@ -245,7 +226,7 @@ class Localized_cholesky_solver {
   /// \pre as `extend_largest()`; threshold > 0 and finite.
   Solve_statistics extend_at_least(double threshold, std::vector<int>& rows,
                                    std::vector<double>& values, Workspace& ws) const {
-    check_threshold(threshold);
+    Largest_first_search::check_threshold(threshold);
     return resume_largest_first(Stop{Largest_first_frontier::no_count, threshold}, rows, values,
                                 ws);
   }
@@ -275,93 +256,21 @@ class Localized_cholesky_solver {
     });
   }
 
-  static void check_threshold(double threshold) {
-    if (!(threshold > 0) || !std::isfinite(threshold))
-      throw std::invalid_argument(
-          "Localized_cholesky_solver: the threshold must be positive and finite");
-  }
-
   Solve_statistics start_largest_first(const std::vector<Rhs_entry>& entries, Stop stop,
                                        std::vector<int>& rows, std::vector<double>& values,
                                        Workspace& ws, double drop_below) const {
     check_drop_below(drop_below);
-    for (const Rhs_entry& e : entries)
-      if (e.column != 0 || !(e.value >= 0) || !std::isfinite(e.value))
-        throw std::invalid_argument(
-            "Localized_cholesky_solver: solve_largest needs one nonnegative column");
+    Largest_first_search::check_right_hand_side(entries);
     return timed_solve([&] {
-      const auto& F = factor();
-      m_substitution.prepare(ws);
-      const std::uint32_t s = ws.next_stamp();
-      double* y = ws.m_block;
-      for (const Rhs_entry& e : entries)
-        y[static_cast<std::size_t>(F.inverse_permutation[e.row])] += e.value;
-      ws.m_largest_drop_below = drop_below;
-      Solve_statistics stats = m_substitution.forward_substitution<1>(entries, ws, s, drop_below);
-      ws.m_backward_nodes.clear();
-      ws.m_frontier.clear();
-      for (const int k : ws.m_forward_nodes)  // the roots of b's paths (one per part of A)
-        if (F.supernode[k].parent == -1)
-          ws.m_frontier.push(std::numeric_limits<double>::infinity(), k);
-      ws.m_open_width = 1;
-      ws.m_open_columns = 1;
-      ws.m_largest_open = true;
-      rows.clear();
-      values.clear();
-      return stats += largest_first(stop, rows, values, ws);
+      return Largest_first_search(m_substitution).start(entries, stop, rows, values, ws,
+                                                         drop_below);
     });
   }
 
   Solve_statistics resume_largest_first(Stop stop, std::vector<int>& rows,
                                         std::vector<double>& values, Workspace& ws) const {
-    if (!ws.m_largest_open || ws.m_largest_values != values.size() ||
-        ws.m_largest_values != rows.size())
-      throw std::logic_error(
-          "Localized_cholesky_solver: extend_largest() or extend_at_least() without an open "
-          "solve_largest() or solve_at_least()");
-    return timed_solve([&] { return largest_first(stop, rows, values, ws); });
-  }
-
-  // The back substitution of solve_largest and solve_at_least: pops the
-  // frontier's supernode with the largest bound (the largest solved value
-  // among its rows below; infinity on the right-hand side's paths, where the
-  // bound does not hold) until `stop` is met, solving each popped supernode
-  // in whole and pushing its children.
-  Solve_statistics largest_first(Stop stop, std::vector<int>& rows, std::vector<double>& values,
-                                 Workspace& ws) const {
-    const auto& F = factor();
-    const Supernode_tree& tree = m_substitution.tree();
-    Supernode_kernels kernels = m_substitution.kernels_in(ws);
-    double* y = ws.m_block;
-    const std::uint32_t s = ws.m_stamp;
-    Solve_statistics stats;
-    for (int k; (k = ws.m_frontier.pop(stop)) != -1;) {
-      const auto& sn = F.supernode[k];
-      double* ys = y + static_cast<std::size_t>(sn.first_column);
-      stats.backward_nodes += static_cast<std::size_t>(sn.ncol);
-      stats.factor_entries += kernels.backward<1>(sn, 0, y, ws.m_largest_drop_below);
-      ws.m_backward_stamp[k] = s;
-      ws.m_backward_entry[k] = 0;
-      ws.m_backward_nodes.push_back(k);
-      for (int c = 0; c < sn.ncol; ++c) {
-        rows.push_back(F.permutation[sn.first_column + c]);
-        values.push_back(ys[c]);
-        ws.m_frontier.count(ys[c]);
-      }
-      for (const int* c = tree.children_begin(k); c != tree.children_end(k); ++c) {
-        const int child = *c;
-        double bound = std::numeric_limits<double>::infinity();
-        if (ws.m_forward_stamp[child] != s) {
-          const auto& cn = F.supernode[child];
-          const int* below = F.row_index.data() + cn.below_rows;
-          bound = -std::numeric_limits<double>::infinity();
-          for (int t = 0; t < cn.nbelow; ++t) bound = std::max(bound, y[below[t]]);
-        }
-        ws.m_frontier.push(bound, child);
-      }
-    }
-    ws.m_largest_values = values.size();
-    return stats;
+    return timed_solve(
+        [&] { return Largest_first_search(m_substitution).resume(stop, rows, values, ws); });
   }
 
   Localized_substitution m_substitution;

@@ -16,7 +16,7 @@
 namespace expmap {
 namespace internal {
 
-class Localized_cholesky_solver;
+class Largest_first_search;
 class Localized_substitution;
 
 /// Per-thread scratch memory of a `Localized_cholesky_solver`
@@ -57,7 +57,8 @@ class Localized_solve_workspace {
   }
 
  private:
-  friend class Localized_cholesky_solver;
+  // The two that solve in it; the solver itself only passes it on.
+  friend class Largest_first_search;
   friend class Localized_substitution;
 
   static int block_width_for(int max_width) {

@@ -23,8 +23,8 @@ namespace internal {
 /// magnitude is at most a threshold in every column are not propagated).
 ///
 /// Which supernodes are solved, and in which order, is the caller's
-/// (`Localized_substitution`, `Localized_cholesky_solver`); these kernels
-/// only see one at a time. W
+/// (`Localized_substitution`, `Largest_first_search`); these kernels only
+/// see one at a time. W
 /// is a compile-time width so that the update of a row is a fixed-length
 /// loop the compiler vectorizes. The entries are those of the supernode in
 /// the factor's precision (T is double or float); the sums are in double.
