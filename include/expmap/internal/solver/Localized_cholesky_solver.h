@@ -3,6 +3,39 @@
 #ifndef EXPMAP_INTERNAL_SOLVER_LOCALIZED_CHOLESKY_SOLVER_H
 #define EXPMAP_INTERNAL_SOLVER_LOCALIZED_CHOLESKY_SOLVER_H
 
+/// \file Localized_cholesky_solver.h
+/// The sparse engine of the heat method (include/expmap/internal/solver/):
+/// localized forward and back substitution on a whole-mesh Cholesky factor.
+/// It includes no mesh type; the heat query (internal/heat/) is its only
+/// caller in the library. From the top down:
+///
+/// - `Localized_cholesky_solver.h` (this file): the driver, the one class
+///   the rest of the library uses. It checks arguments, splits wide blocks,
+///   picks the kernel width, times every solve and hands the work to:
+/// - `Localized_substitution.h`: the factor with its elimination tree, and
+///   the forward and back substitutions over the tree paths a right-hand
+///   side and the requested rows reach, one block at a time, extendable.
+/// - `Largest_first_search.h`: the back substitution that visits the tree
+///   largest first and stops by the maximum principle (M-matrices, a
+///   nonnegative right-hand side), with `Largest_first_frontier.h`, its
+///   queue of subtrees and their bounds.
+/// - `Pruning_threshold.h`: what `drop_below` means, why pruning pays and
+///   how to choose it; `Timed_solve.h`: the timing; `Rhs_entry.h`: one entry
+///   of a sparse right-hand side.
+/// - `Localized_solve_workspace.h`: a thread's scratch, and the state of a
+///   solve left open for extension.
+/// - Storage and kernels: `Supernodal_factor.h` (the factor regrouped into
+///   dense supernodes, in double or single precision), `Supernode_tree.h`
+///   (children, height, the reach of a set of columns),
+///   `Supernode_kernels.h` (one supernode's forward and back substitution,
+///   full or pruned) on `Dense_row_kernels.h` (the dense row updates),
+///   `Low_rank_rows_below.h` (rows below a separator kept as a truncated SVD,
+///   by LAPACK's `dgesdd` declared in `Lapack.h`), `Huge_page_allocator.h`
+///   (the large arrays in huge pages).
+/// - `Pivoted_householder_qr.h`: a dense least-squares decomposition beside
+///   the engine, not part of it: the star gradient fit
+///   (internal/Star_gradient.h) uses it.
+
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Solve_statistics.h>
