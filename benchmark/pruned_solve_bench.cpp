@@ -45,10 +45,10 @@
 #include <expmap/Cholmod_solver.h>
 #include <expmap/Heat_options.h>
 #include <expmap/internal/Indexed_mesh.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/heat/Heat_factors.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>

@@ -8,7 +8,8 @@ export DEBIAN_FRONTEND=noninteractive
 # libopenblas0-pthread: CHOLMOD's supernodal factorization runs on the
 # machine's BLAS, which is Debian's reference BLAS unless an optimized one is
 # installed; OpenBLAS factors large meshes faster (doc/paper_scale.md).
-# liblapack-dev: the library calls LAPACK's SVD itself (Low_rank_rows_below.h).
+# liblapack-dev: the library calls LAPACK's SVD itself
+# (include/expmap/internal/solver/Low_rank_rows_below.h).
 packages=(g++ cmake make ccache
           libcgal-dev libeigen3-dev libsuitesparse-dev libmetis-dev liblapack-dev
           libboost-graph-dev libboost-test-dev libopenblas0-pthread

@@ -3,7 +3,7 @@
 #ifndef EXPMAP_TEST_SOLUTIONS_TO_COMPARE_H
 #define EXPMAP_TEST_SOLUTIONS_TO_COMPARE_H
 
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // boundary, small ones are ordinary; either way a std::vector using it keeps
 // its contents through growth, shrinking and copies.
 
-#include <expmap/internal/Huge_page_allocator.h>
+#include <expmap/internal/solver/Huge_page_allocator.h>
 
 #include <boost/test/unit_test.hpp>
 

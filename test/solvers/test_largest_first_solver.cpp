@@ -2,7 +2,7 @@
 // M-matrix must find the same largest values as a full solve, with the
 // values of a full solve, while solving fewer rows than the matrix has.
 #include <expmap/Cholmod_solver.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include "Random_grid_operator.h"
 

@@ -1,7 +1,7 @@
 // Localized block solves must give the numbers of a full solve.
 #include <expmap/Cholmod_solver.h>
 #include <expmap/Eigen_simplicial_solver.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include "Random_grid_operator.h"
 

@@ -2,7 +2,7 @@
 // solve gives the dense factor's answer to about the tolerance, reading
 // fewer entries.
 #include <expmap/Cholmod_solver.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include "Solutions_to_compare.h"
 #include "Random_grid_operator.h"

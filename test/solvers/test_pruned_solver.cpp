@@ -2,7 +2,7 @@
 // to 1e-10 relative (each value against itself, not against the largest),
 // and must actually skip work.
 #include <expmap/Cholmod_solver.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include "Random_grid_operator.h"
 

@@ -1,7 +1,7 @@
 // A factor kept in single precision: the same solves, to the round-off of
 // floats, in half the memory.
 #include <expmap/Cholmod_solver.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include "Solutions_to_compare.h"
 #include "Random_grid_operator.h"

@@ -4,9 +4,9 @@
 #define EXPMAP_INTERNAL_STAR_GRADIENT_H
 
 #include <expmap/internal/Mesh_arrays.h>
-#include <expmap/internal/Pivoted_householder_qr.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Vector3.h>
+#include <expmap/internal/solver/Pivoted_householder_qr.h>
 
 #include <algorithm>
 #include <array>

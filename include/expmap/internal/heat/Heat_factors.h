@@ -14,9 +14,9 @@
 #include <expmap/internal/Cotan_operators.h>
 #include <expmap/internal/Faces_by_smallest_corner.h>
 #include <expmap/internal/Intrinsic_delaunay.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Triangulation_adjacency.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <algorithm>
 #include <cmath>

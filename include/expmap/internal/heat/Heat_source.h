@@ -8,10 +8,10 @@
 // of its corners' heat: a right-hand side of two or three entries instead
 // of one, solved at the cost of one (doc/surface_points.md).
 
-#include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Point_source.h>
 #include <expmap/internal/Vector3.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <array>
 #include <vector>

@@ -10,11 +10,11 @@
 #include <expmap/Heat_options.h>
 #include <expmap/internal/Geodesic_front.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Localized_cholesky_solver.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_source.h>
+#include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <array>
 #include <cstddef>

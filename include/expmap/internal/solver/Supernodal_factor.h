@@ -1,11 +1,11 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
-#define EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
+#ifndef EXPMAP_INTERNAL_SOLVER_SUPERNODAL_FACTOR_H
+#define EXPMAP_INTERNAL_SOLVER_SUPERNODAL_FACTOR_H
 
 #include <expmap/Cholesky_factor_view.h>
 #include <expmap/Factor_precision.h>
-#include <expmap/internal/Huge_page_allocator.h>
+#include <expmap/internal/solver/Huge_page_allocator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -225,4 +225,4 @@ inline Supernodal_factor make_supernodal_factor(
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_SUPERNODAL_FACTOR_H
+#endif  // EXPMAP_INTERNAL_SOLVER_SUPERNODAL_FACTOR_H

@@ -1,11 +1,11 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
-#define EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H
+#define EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H
 
-#include <expmap/internal/Huge_page_allocator.h>
-#include <expmap/internal/Largest_first_frontier.h>
-#include <expmap/internal/Supernode_kernels.h>
+#include <expmap/internal/solver/Huge_page_allocator.h>
+#include <expmap/internal/solver/Largest_first_frontier.h>
+#include <expmap/internal/solver/Supernode_kernels.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -16,7 +16,8 @@
 namespace expmap {
 namespace internal {
 
-class Localized_cholesky_solver;
+class Largest_first_search;
+class Localized_substitution;
 
 /// Per-thread scratch memory of a `Localized_cholesky_solver`
 /// (`Localized_cholesky_solver::Workspace`): a dense block of n rows by the
@@ -56,7 +57,9 @@ class Localized_solve_workspace {
   }
 
  private:
-  friend class Localized_cholesky_solver;
+  // The two that solve in it; the solver itself only passes it on.
+  friend class Largest_first_search;
+  friend class Localized_substitution;
 
   static int block_width_for(int max_width) {
     if (max_width < 1)
@@ -120,4 +123,4 @@ class Localized_solve_workspace {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LOCALIZED_SOLVE_WORKSPACE_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LOCALIZED_SOLVE_WORKSPACE_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_DENSE_ROW_KERNELS_H
-#define EXPMAP_INTERNAL_DENSE_ROW_KERNELS_H
+#ifndef EXPMAP_INTERNAL_SOLVER_DENSE_ROW_KERNELS_H
+#define EXPMAP_INTERNAL_SOLVER_DENSE_ROW_KERNELS_H
 
 #include <array>
 #include <cstddef>
@@ -48,4 +48,4 @@ void subtract_four_rows(const T* const (&l)[4], const std::array<std::array<doub
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_DENSE_ROW_KERNELS_H
+#endif  // EXPMAP_INTERNAL_SOLVER_DENSE_ROW_KERNELS_H

@@ -1,11 +1,11 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
-#define EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LOW_RANK_ROWS_BELOW_H
+#define EXPMAP_INTERNAL_SOLVER_LOW_RANK_ROWS_BELOW_H
 
-#include <expmap/internal/Lapack.h>
 #include <expmap/internal/Parallel_loop.h>
-#include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/solver/Lapack.h>
+#include <expmap/internal/solver/Supernodal_factor.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -148,4 +148,4 @@ inline std::size_t compress_rows_below(Supernodal_factor& f, const Rows_below_co
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LOW_RANK_ROWS_BELOW_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LOW_RANK_ROWS_BELOW_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LAPACK_H
-#define EXPMAP_INTERNAL_LAPACK_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LAPACK_H
+#define EXPMAP_INTERNAL_SOLVER_LAPACK_H
 
 #include <cstddef>
 
@@ -18,4 +18,4 @@ void dgesdd_(const char* jobz, const int* m, const int* n, double* a, const int*
              const int* lwork, int* iwork, int* info, std::size_t jobz_length);
 }
 
-#endif  // EXPMAP_INTERNAL_LAPACK_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LAPACK_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
-#define EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
+#ifndef EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H
+#define EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H
 
 #include <algorithm>
 #include <cstddef>
@@ -15,7 +15,7 @@ namespace expmap {
 namespace internal {
 
 /// Where a back substitution that visits the elimination tree largest
-/// first (`Localized_cholesky_solver::solve_largest`) goes next, and when it
+/// first (`Largest_first_search`) goes next, and when it
 /// may stop: the supernodes not visited yet whose parents were, each with
 /// a bound on the values of its subtree, and the values solved so far.
 ///
@@ -118,4 +118,4 @@ class Largest_first_frontier {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_LARGEST_FIRST_FRONTIER_H
+#endif  // EXPMAP_INTERNAL_SOLVER_LARGEST_FIRST_FRONTIER_H

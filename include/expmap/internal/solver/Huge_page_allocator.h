@@ -1,8 +1,8 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef EXPMAP_INTERNAL_HUGE_PAGE_ALLOCATOR_H
-#define EXPMAP_INTERNAL_HUGE_PAGE_ALLOCATOR_H
+#ifndef EXPMAP_INTERNAL_SOLVER_HUGE_PAGE_ALLOCATOR_H
+#define EXPMAP_INTERNAL_SOLVER_HUGE_PAGE_ALLOCATOR_H
 
 /// \file Huge_page_allocator.h
 /// An allocator that asks the operating system to back large arrays with
@@ -89,4 +89,4 @@ class Huge_page_allocator {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_HUGE_PAGE_ALLOCATOR_H
+#endif  // EXPMAP_INTERNAL_SOLVER_HUGE_PAGE_ALLOCATOR_H

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_SUPERNODE_TREE_H
-#define EXPMAP_INTERNAL_SUPERNODE_TREE_H
+#ifndef EXPMAP_INTERNAL_SOLVER_SUPERNODE_TREE_H
+#define EXPMAP_INTERNAL_SOLVER_SUPERNODE_TREE_H
 
-#include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/solver/Supernodal_factor.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -96,4 +96,4 @@ void supernode_reach(const Supernodal_factor& factor, const Start* begin, const 
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_SUPERNODE_TREE_H
+#endif  // EXPMAP_INTERNAL_SOLVER_SUPERNODE_TREE_H

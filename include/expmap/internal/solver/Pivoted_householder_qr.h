@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_PIVOTED_HOUSEHOLDER_QR_H
-#define EXPMAP_INTERNAL_PIVOTED_HOUSEHOLDER_QR_H
+#ifndef EXPMAP_INTERNAL_SOLVER_PIVOTED_HOUSEHOLDER_QR_H
+#define EXPMAP_INTERNAL_SOLVER_PIVOTED_HOUSEHOLDER_QR_H
 
 #include <algorithm>
 #include <array>
@@ -114,4 +114,4 @@ class Pivoted_householder_qr {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_PIVOTED_HOUSEHOLDER_QR_H
+#endif  // EXPMAP_INTERNAL_SOLVER_PIVOTED_HOUSEHOLDER_QR_H

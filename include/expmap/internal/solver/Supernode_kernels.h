@@ -1,10 +1,10 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
-#define EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
+#ifndef EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H
+#define EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H
 
-#include <expmap/internal/Dense_row_kernels.h>
-#include <expmap/internal/Supernodal_factor.h>
+#include <expmap/internal/solver/Dense_row_kernels.h>
+#include <expmap/internal/solver/Supernodal_factor.h>
 
 #include <array>
 #include <cmath>
@@ -23,7 +23,8 @@ namespace internal {
 /// magnitude is at most a threshold in every column are not propagated).
 ///
 /// Which supernodes are solved, and in which order, is the caller's
-/// (`Localized_cholesky_solver`); these kernels only see one at a time. W
+/// (`Localized_substitution`, `Largest_first_search`); these kernels only
+/// see one at a time. W
 /// is a compile-time width so that the update of a row is a fixed-length
 /// loop the compiler vectorizes. The entries are those of the supernode in
 /// the factor's precision (T is double or float); the sums are in double.
@@ -465,4 +466,4 @@ class Supernode_kernels {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_SUPERNODE_KERNELS_H
+#endif  // EXPMAP_INTERNAL_SOLVER_SUPERNODE_KERNELS_H
