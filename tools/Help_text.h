@@ -59,7 +59,12 @@ inline std::string map_options_help(const std::string& method_list) {
        "method:\n"
        "  --method M           default: heat; one of\n";
   h << method_list;
-  h << "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
+  h << "  --force              exact only: try a map even where its memory estimate\n"
+       "                       (about 1 GB at 16,000 patch vertices, 3.3 GB at 32,000;\n"
+       "                       per thread in a batch) exceeds the memory available;\n"
+       "                       without it such a run stops with an error before it\n"
+       "                       starts\n"
+       "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
@@ -111,7 +116,8 @@ inline std::string map_options_help(const std::string& method_list) {
 inline std::string compute_help(const std::string& method_list) {
   return "usage: expmap compute MESH (--source V | --source-point X,Y,Z |\n"
          "                      --source-face F --barycentric A,B,C)\n"
-         "                      (--radius R | --fraction F | --vertices K) [--method M] [--time-factor T]\n"
+         "                      (--radius R | --fraction F | --vertices K) [--method M] [--force]\n"
+         "                      [--time-factor T]\n"
          "                      [--laplacian L] [--vertex-area A]\n"
          "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                      [--near-source-blend B,E] [--reference X,Y,Z]\n"
@@ -142,7 +148,8 @@ inline std::string compute_help(const std::string& method_list) {
          "                             by distance, flipped triangles in red\n"
          "  -h, --help           this help\n"
          "\n"
-         "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
+         "Options also accept --name=value. The heat method's precomputation shows its\n"
+         "progress on stderr when that is a terminal. A summary (mesh size, timings, patch size,\n"
          "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
          "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
 }
@@ -151,7 +158,7 @@ inline std::string compute_help(const std::string& method_list) {
 inline std::string batch_help(const std::string& method_list) {
   return "usage: expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
          "                    (--radius R | --fraction F | --vertices K)\n"
-         "                    [--method M] [--threads N] [--time-factor T]\n"
+         "                    [--method M] [--force] [--threads N] [--time-factor T]\n"
          "                    [--laplacian L] [--vertex-area A]\n"
          "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                    [--near-source-blend B,E]\n"

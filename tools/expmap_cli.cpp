@@ -6,9 +6,12 @@
 // 2 usage error (options and their values). Every error is one line on
 // stderr starting with "expmap: error: ".
 
+#include "Batch_output.h"
 #include "Batch_table.h"
 #include "Command_line.h"
+#include "Exact_memory.h"
 #include "Help_text.h"
+#include "Patch_size_estimate.h"
 #include "Point_sources.h"
 #include "Progress_bar.h"
 #ifdef EXPMAP_WITH_VIEWER
@@ -57,6 +60,7 @@ using Surface_point = expmap::Surface_point<Mesh::Face_index>;
 /// The source of `expmap compute`: a vertex or a point of a face.
 using Source = std::variant<Mesh::Vertex_index, Surface_point>;
 using expmap_cli::Batch_arguments;
+using expmap_cli::Batch_output;
 using expmap_cli::Compute_arguments;
 using expmap_cli::Runtime_error;
 using expmap_cli::Usage_error;
@@ -130,7 +134,10 @@ Method_class make_method(const Mesh& mesh, const Compute_arguments&) {
 }
 template <>
 Heat make_method<Heat>(const Mesh& mesh, const Compute_arguments& a) {
-  return Heat(mesh, heat_options(a));
+  expmap::Heat_options options = heat_options(a);
+  expmap_cli::Precomputation_line line;
+  options.progress = line.callback();
+  return Heat(mesh, options);
 }
 
 // The method's settings in words for the summary and the SVG caption; ""
@@ -168,78 +175,6 @@ Run run_one(const Mesh& mesh, const Compute_arguments& a, const Source& source,
   run.description = settings_description<Method_class>(a);
   return run;
 }
-
-/// Where the maps of a batch go: CSV rows as each chunk of maps arrives (so
-/// memory stays bounded), the columns of `.npz` outputs at the end (they
-/// hold the whole table). Files are created on the first chunk, after the
-/// precomputation succeeded, and removed again if the batch does not finish.
-class Batch_output {
- public:
-  // `file_index` as in Mesh_reading_report: the outputs speak of the file's
-  // vertices, not the mesh's. With `point_sources` a map's source is the
-  // position of its point in the list, as it is.
-  Batch_output(const std::vector<expmap_cli::Output>& outputs,
-               const std::vector<std::size_t>& file_index, bool point_sources)
-      : m_outputs(outputs), m_file_index(file_index), m_point_sources(point_sources) {}
-  Batch_output(const Batch_output&) = delete;
-  Batch_output& operator=(const Batch_output&) = delete;
-  ~Batch_output() {
-    if (m_finished) return;
-    m_csv.clear();
-    std::error_code ignored;
-    for (const auto& output : m_outputs) std::filesystem::remove(output.path, ignored);
-  }
-
-  // `chunk` numbers vertices as the mesh does.
-  void write(expmap_cli::Batch_table chunk) {
-    if (!m_point_sources)
-      for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
-    for (std::int64_t& v : chunk.vertex) v = static_cast<std::int64_t>(m_file_index[v]);
-    if (!m_opened) open_csv();
-    for (std::ofstream& out : m_csv) expmap_cli::write_csv_rows(out, chunk);
-    if (has(expmap_cli::Output_format::npz)) m_table.append(chunk);
-  }
-
-  void finish() {
-    if (!m_opened) open_csv();  // a batch of no sources still gets its header
-    for (const auto& output : m_outputs) {
-      if (output.format != expmap_cli::Output_format::npz) continue;
-      std::ofstream out(output.path, std::ios::binary);
-      expmap_cli::write_npz(out, m_table);
-      close_checked(out, output.path);
-    }
-    std::size_t k = 0;
-    for (const auto& output : m_outputs)
-      if (output.format == expmap_cli::Output_format::csv) close_checked(m_csv[k++], output.path);
-    m_finished = true;
-  }
-
- private:
-  bool has(expmap_cli::Output_format format) const {
-    return std::any_of(m_outputs.begin(), m_outputs.end(),
-                       [&](const expmap_cli::Output& o) { return o.format == format; });
-  }
-  void open_csv() {
-    for (const auto& output : m_outputs) {
-      if (output.format != expmap_cli::Output_format::csv) continue;
-      m_csv.emplace_back(output.path);
-      if (!m_csv.back()) throw Runtime_error("cannot create output file '" + output.path + "'");
-      m_csv.back() << "source,vertex,r,theta,u,v,fold_free_radius\n";
-    }
-    m_opened = true;
-  }
-  static void close_checked(std::ofstream& out, const std::string& path) {
-    out.close();
-    if (!out) throw Runtime_error("could not write all of '" + path + "'");
-  }
-
-  std::vector<expmap_cli::Output> m_outputs;
-  const std::vector<std::size_t>& m_file_index;
-  bool m_point_sources;
-  std::vector<std::ofstream> m_csv;
-  expmap_cli::Batch_table m_table;
-  bool m_opened = false, m_finished = false;
-};
 
 struct Batch_run {
   std::string description;  // as Run::description
@@ -465,6 +400,7 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 // costly part: its settings apply to it, and the outputs' folders exist.
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
+  if (a.force && a.method != "exact") throw Usage_error("--force applies only to --method exact");
   if (!method.takes_heat_options && (a.time_factor || a.laplacian ||
                                      a.vertex_area || a.factor_precision || a.query_threads ||
                                      a.angles || a.near_source_blend))
@@ -528,6 +464,33 @@ std::pair<Source, std::string> compute_source(const Compute_arguments& a, const 
   return {p, "source " + points.describe(p)};
 }
 
+// Before an exact run: refuses it if `maps_at_once` maps of the patch
+// around the one of `sources` with the largest may not fit in memory
+// (Exact_memory.h).
+void check_exact_run(const Compute_arguments& a, const Mesh& mesh, const std::vector<Source>& sources,
+                     unsigned maps_at_once) {
+  if (a.method != "exact" || sources.empty()) return;
+  const expmap::Patch patch = make_patch(a);
+  const std::size_t cap = std::size_t(1) << 30;
+  std::size_t largest = 0;
+  for (std::size_t i = 0; i < sources.size(); ++i) {
+    Mesh::Face_index face;
+    std::array<double, 3> center{};
+    if (const auto* v = std::get_if<Mesh::Vertex_index>(&sources[i])) {
+      face = expmap_cli::incident_face(mesh, *v);
+      for (int d = 0; d < 3; ++d) center[d] = CGAL::to_double(mesh.point(*v)[d]);
+    } else {
+      const Surface_point& p = std::get<Surface_point>(sources[i]);
+      face = p.face;
+      center = expmap_cli::surface_point_position(mesh, face, p.barycentric);
+    }
+    if (face == Mesh::null_face()) continue;  // isolated: the method says so
+    largest = std::max(largest, expmap_cli::estimated_patch_vertices(mesh, patch, face, center, cap));
+    if (patch.kind() != expmap::Patch::Kind::geodesic_radius) break;  // the same for all
+  }
+  expmap_cli::check_exact_memory(largest, maps_at_once, a.force);
+}
+
 int compute(const Compute_arguments& a, const Method& method, const Input& input) {
   const Mesh& mesh = input.mesh;
   const std::pair<Source, std::string> named_source = compute_source(a, input);
@@ -537,6 +500,7 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // the summary prints it
+  check_exact_run(a, mesh, {source}, 1);
 
   Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
@@ -622,6 +586,13 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // a column of every output
+  std::vector<Source> sampled;  // of radius patches, whose sizes differ: 16 sources
+  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
+    sampled.push_back(sources.points.empty() ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(
+                                                   sources.vertices[i])))
+                                             : Source(sources.points[i]));
+  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  check_exact_run(a, mesh, sampled, static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
 
   Batch_output output(a.outputs, input.report.file_index, !sources.points.empty());
   Batch_run run = with_repair_hint(
@@ -635,7 +606,7 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   std::printf("precompute:  %.3f s\n", run.precompute_seconds);
   std::printf("maps:        %zu of %zu sources in %.3f s on %u threads, %.1f maps/s\n", maps,
               sources.size(), run.batch_seconds,
-              a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency()),
+              threads,
               run.batch_seconds > 0 ? static_cast<double>(sources.size()) / run.batch_seconds : 0.0);
   std::printf("rows:        %zu (%.1f patch vertices per map)\n", run.rows,
               maps ? static_cast<double>(run.rows) / static_cast<double>(maps) : 0.0);
