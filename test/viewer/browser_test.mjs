@@ -59,6 +59,11 @@ try {
     '/api/mesh gives three coordinates per vertex and three corners per face');
   const methodNames = status.methods.map((m) => m.name).join(',');
   check(methodNames === 'heat,dem,dgpc,exact', `/api/status lists the four methods (got ${methodNames})`);
+  const exactInfo = status.methods.find((m) => m.name === 'exact');
+  check(status.methods.every((m) => m.max_patch_vertices > 0) && exactInfo.max_patch_vertices === 16000 &&
+    exactInfo.max_patch_mib > 0 && status.limits.queries_per_method > 0 && status.limits.waiting_per_method >= 0 &&
+    status.limits.max_wait_seconds > 0,
+  `/api/status gives each method's limit and the queue's (got ${JSON.stringify(status.limits)}, ${JSON.stringify(exactInfo)})`);
 
   // Bad requests: HTTP 400 with a message, nothing else.
   const v0 = mesh.vertices.slice(0, 3).join(',');
@@ -220,6 +225,14 @@ try {
   await page.mouse.up();
   await page.waitForTimeout(300);
   check((await drawn(0)) >= start + 2, `dragging drew ${(await drawn(0)) - start} maps`);
+
+  // The exact method's limit shows before any map of it is asked for.
+  await page.goto(`${server.url}?method=exact&fraction=0.05`);
+  await page.waitForFunction(() => document.getElementById('info-0').textContent.includes('patch vertices here'),
+    null, { timeout: 20000 });
+  const limitText = await page.evaluate(() => document.getElementById('info-0').textContent);
+  check(limitText.includes('maps up to 16,000 patch vertices here') && limitText.includes('expmap compute'),
+    `the page shows the exact method's limit before a map (${limitText})`);
 
   // Two methods side by side on one camera.
   await page.goto(`${server.url}?point=${first.point.join(',')}&method=dgpc&fraction=0.05&compare=dgpc`);
