@@ -5,7 +5,7 @@
 
 /// \file Patch_size_estimate.h
 /// How many vertices a patch will have, known before any map is computed:
-/// what the viewer's and the command line's limits are checked against.
+/// what the viewer's patch limits are checked against.
 
 #include <expmap/Patch.h>
 
@@ -62,17 +62,6 @@ std::size_t vertices_within(const CGAL::Surface_mesh<Point>& mesh,
     }
   }
   return std::min(count, cap + 1);
-}
-
-/// A face with the vertex `v` as a corner; a null face for an isolated
-/// vertex.
-template <class Point>
-typename CGAL::Surface_mesh<Point>::Face_index incident_face(
-    const CGAL::Surface_mesh<Point>& mesh, typename CGAL::Surface_mesh<Point>::Vertex_index v) {
-  if (mesh.halfedge(v) == CGAL::Surface_mesh<Point>::null_halfedge()) return {};
-  for (const auto h : CGAL::halfedges_around_target(mesh.halfedge(v), mesh))
-    if (!mesh.is_border(h)) return mesh.face(h);
-  return {};
 }
 
 /// The position of the point of `face` with barycentric coordinates

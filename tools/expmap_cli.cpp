@@ -11,7 +11,6 @@
 #include "Command_line.h"
 #include "Exact_memory.h"
 #include "Help_text.h"
-#include "Patch_size_estimate.h"
 #include "Point_sources.h"
 #include "Progress_bar.h"
 #ifdef EXPMAP_WITH_VIEWER
@@ -76,13 +75,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Precomputes with `make()` and answers one query, timing both: the two
-// numbers a user of a precompute-once method cares about.
-template <class Make, class Query>
-Run timed_run(Make make, const Source& source, const expmap::Patch& patch, const Query& query) {
+// numbers a user of a precompute-once method cares about. `check(method)`
+// comes between them.
+template <class Make, class Check, class Query>
+Run timed_run(Make make, Check check, const Source& source, const expmap::Patch& patch,
+              const Query& query) {
   Run run;
   auto start = std::chrono::steady_clock::now();
   const auto method = make();
   run.precompute_seconds = seconds_since(start);
+  check(method);
   start = std::chrono::steady_clock::now();
   run.map = std::visit([&](const auto& s) { return method.compute(s, patch, query); },
                        source);
@@ -167,11 +169,36 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   return d.str();
 }
 
+// Before maps of `method`, `maps_at_once` at a time, from `sources`: an
+// exact run whose largest submesh may not fit in memory is refused
+// (Exact_memory.h); the other methods' maps need no such check.
+template <class Method_class>
+void check_memory(const Method_class&, const Compute_arguments&, const std::vector<Source>&,
+                  const expmap::Patch&, unsigned) {}
+template <>
+void check_memory(const expmap::Exact_exponential_map<Mesh>& method, const Compute_arguments& a,
+                  const std::vector<Source>& sources, const expmap::Patch& patch,
+                  unsigned maps_at_once) {
+  const std::size_t cap = expmap_cli::exact_region_faces_to_count(maps_at_once);
+  if (cap == 0) return;  // the memory available is not known
+  std::size_t largest = 0;
+  for (const Source& source : sources) {
+    try {
+      const auto count = [&](const auto& s) { return method.region_faces(s, patch, cap); };
+      largest = std::max(largest, std::visit(count, source));
+    } catch (const expmap::Invalid_input&) {
+      // The query fails with the same message, for this source only.
+    }
+  }
+  expmap_cli::check_exact_memory(largest, maps_at_once, a.force);
+}
+
 template <class Method_class>
 Run run_one(const Mesh& mesh, const Compute_arguments& a, const Source& source,
             const expmap::Patch& patch, const expmap::Query_options& query) {
-  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch,
-                      query_settings<Method_class>(a, query));
+  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); },
+                      [&](const Method_class& m) { check_memory(m, a, {source}, patch, 1); }, source,
+                      patch, query_settings<Method_class>(a, query));
   run.description = settings_description<Method_class>(a);
   return run;
 }
@@ -222,6 +249,14 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
   const auto method = make_method<Method_class>(mesh, a);
   run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
+  std::vector<Source> sampled;  // 16 sources: radius patches differ from source to source
+  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
+    sampled.push_back(sources.points.empty()
+                          ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(sources.vertices[i])))
+                          : Source(sources.points[i]));
+  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  check_memory(method, a, sampled, patch,
+               static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
 
   start = std::chrono::steady_clock::now();
   expmap_cli::Progress_bar bar(sources.size());
@@ -464,33 +499,6 @@ std::pair<Source, std::string> compute_source(const Compute_arguments& a, const 
   return {p, "source " + points.describe(p)};
 }
 
-// Before an exact run: refuses it if `maps_at_once` maps of the patch
-// around the one of `sources` with the largest may not fit in memory
-// (Exact_memory.h).
-void check_exact_run(const Compute_arguments& a, const Mesh& mesh, const std::vector<Source>& sources,
-                     unsigned maps_at_once) {
-  if (a.method != "exact" || sources.empty()) return;
-  const expmap::Patch patch = make_patch(a);
-  const std::size_t cap = std::size_t(1) << 30;
-  std::size_t largest = 0;
-  for (std::size_t i = 0; i < sources.size(); ++i) {
-    Mesh::Face_index face;
-    std::array<double, 3> center{};
-    if (const auto* v = std::get_if<Mesh::Vertex_index>(&sources[i])) {
-      face = expmap_cli::incident_face(mesh, *v);
-      for (int d = 0; d < 3; ++d) center[d] = CGAL::to_double(mesh.point(*v)[d]);
-    } else {
-      const Surface_point& p = std::get<Surface_point>(sources[i]);
-      face = p.face;
-      center = expmap_cli::surface_point_position(mesh, face, p.barycentric);
-    }
-    if (face == Mesh::null_face()) continue;  // isolated: the method says so
-    largest = std::max(largest, expmap_cli::estimated_patch_vertices(mesh, patch, face, center, cap));
-    if (patch.kind() != expmap::Patch::Kind::geodesic_radius) break;  // the same for all
-  }
-  expmap_cli::check_exact_memory(largest, maps_at_once, a.force);
-}
-
 int compute(const Compute_arguments& a, const Method& method, const Input& input) {
   const Mesh& mesh = input.mesh;
   const std::pair<Source, std::string> named_source = compute_source(a, input);
@@ -500,7 +508,6 @@ int compute(const Compute_arguments& a, const Method& method, const Input& input
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // the summary prints it
-  check_exact_run(a, mesh, {source}, 1);
 
   Run run = with_repair_hint(a, [&] { return method.run(mesh, a, source, make_patch(a), query); });
   if (run.description.empty()) run.description = method.description;
@@ -586,13 +593,7 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // a column of every output
-  std::vector<Source> sampled;  // of radius patches, whose sizes differ: 16 sources
-  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
-    sampled.push_back(sources.points.empty() ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(
-                                                   sources.vertices[i])))
-                                             : Source(sources.points[i]));
   const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
-  check_exact_run(a, mesh, sampled, static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
 
   Batch_output output(a.outputs, input.report.file_index, !sources.points.empty());
   Batch_run run = with_repair_hint(
