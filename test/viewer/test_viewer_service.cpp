@@ -294,44 +294,55 @@ BOOST_AUTO_TEST_CASE(vertices_within_a_radius_are_counted) {
 
 // A patch beyond a method's limit is refused before any precomputation,
 // by a fraction or by a radius, with the limit and the way to the map
-// anyway; one within it is answered.
+// anyway; so is an exact map whose submesh is too large; a map within the
+// limits is answered.
 BOOST_AUTO_TEST_CASE(requests_beyond_a_methods_limit_are_too_large) {
-  // 68,121 vertices: a quarter of them is more than the exact limit.
+  // 90,601 vertices: a quarter of them is more than the exact limit.
   Mesh mesh;
-  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(260, 260, 2.0, 2.0), mesh);
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(300, 300, 2.0, 2.0), mesh);
   const double n = static_cast<double>(mesh.number_of_vertices());
   BOOST_REQUIRE(0.25 * n > max_exact_patch_vertices);
   Map_service service(mesh, {}, "grid.off");
-  const auto too_large = [&](Params p, const std::string& text) {
+  const auto too_large = [&](Params p, const std::string& quantity, std::size_t maximum,
+                             const std::string& text) {
     try {
       service.compute(p);
     } catch (const Too_large& e) {
       BOOST_TEST_MESSAGE(e.what());
       BOOST_TEST(e.method == "exact");
-      BOOST_TEST(e.max_patch_vertices == max_exact_patch_vertices);
-      BOOST_TEST(e.patch_vertices > max_exact_patch_vertices);
+      BOOST_TEST(e.quantity == quantity);
+      BOOST_TEST(e.maximum == maximum);
+      BOOST_TEST(e.asked > maximum);
       return std::string(e.what()).find(text) != std::string::npos;
     }
     return false;
   };
-  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.25"}},
-                       "fraction 0.25 is 17,031 patch vertices, whose exact map may take"));
-  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.25"}},
-                       "at most 16,000 patch vertices with exact (up to 1.1 GB each): ask for a "
-                       "fraction of at most 0.2348 or a smaller radius, or compute the map with "
-                       "'expmap compute grid.off --method exact --source-point 0.01,0.02,0 --fraction 0.25 -o map.csv'"));
-  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"radius", "2"}},
-                       "radius 2 takes in more than 16,000 vertices"));
+  const std::string command = "compute the map with 'expmap compute grid.off --method exact --source-point "
+                              "0.01,0.02,0 --fraction ";
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.25"}}, "patch_vertices",
+                       max_exact_patch_vertices,
+                       "fraction 0.25 is 22,651 patch vertices; this server maps at most 20,000 patch "
+                       "vertices with exact: ask for a smaller patch (a fraction of at most 0.2207), or " +
+                           command + "0.25 -o map.csv'"));
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"radius", "2"}}, "patch_vertices",
+                       max_exact_patch_vertices,
+                       "radius 2 takes in more than 20,000 vertices (counted within that distance in space)"));
   BOOST_TEST(service.cache().status().empty());  // nothing was precomputed for them
+  // 19,027 patch vertices, within that limit; their submesh has more than
+  // 40,000 faces (the graph distance that reaches them overshoots).
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.21"}}, "region_faces",
+                       max_exact_region_faces,
+                       "this exact map's submesh (the faces within reach of its geodesics) has more than "
+                       "40,000 faces, the most this server maps (up to 1.1 GB; the surface may fold back "
+                       "within its reach): ask for a smaller patch, or " + command + "0.21 -o map.csv'"));
 
-  // Just inside the limit by a radius (a disk of about 15,000 vertices on
-  // this grid of spacing 2/260), and another method beyond exact's limit.
-  const double radius = std::sqrt(15000 / 3.14159265) * 2.0 / 260;
-  const Map_response r = service.compute(
-      {{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"fraction", "0.25"}});
+  // Other methods map a quarter of it; a radius inside a disk of about
+  // 15,000 vertices (the grid's spacing is 2/300) passes the count.
+  const Map_response r = service.compute({{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"fraction", "0.25"}});
   BOOST_TEST(r.map.size() == static_cast<std::size_t>(std::ceil(0.25 * n)));
-  const Map_response inside = service.compute(
-      {{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"radius", std::to_string(radius)}});
+  const double radius = std::sqrt(15000 / 3.14159265) * 2.0 / 300;
+  const Map_response inside =
+      service.compute({{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"radius", std::to_string(radius)}});
   BOOST_TEST(inside.map.size() < max_exact_patch_vertices);
   BOOST_TEST(expmap_cli::vertices_within(mesh, inside.source.face, inside.position, radius,
                                          max_exact_patch_vertices) <= max_exact_patch_vertices);

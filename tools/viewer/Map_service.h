@@ -32,15 +32,17 @@ namespace expmap_view {
 /// with the limit and the size asked for.
 class Too_large : public std::runtime_error {
  public:
-  Too_large(const std::string& message, std::string method, std::size_t max_patch_vertices,
-            std::size_t patch_vertices)
+  Too_large(const std::string& message, std::string method, std::string quantity,
+            std::size_t maximum, std::size_t asked)
       : std::runtime_error(message),
         method(std::move(method)),
-        max_patch_vertices(max_patch_vertices),
-        patch_vertices(patch_vertices) {}
+        quantity(std::move(quantity)),
+        maximum(maximum),
+        asked(asked) {}
   std::string method;
-  std::size_t max_patch_vertices;
-  std::size_t patch_vertices;  ///< asked for; for a radius, a count above the limit
+  std::string quantity;  ///< "patch_vertices", or the exact method's "region_faces"
+  std::size_t maximum;
+  std::size_t asked;  ///< where counting stopped at the limit, maximum + 1
 };
 
 /// One answered map query.
@@ -79,8 +81,10 @@ class Map_service {
   /// \throws Bad_request for parameters that make no request, an unknown
   ///         method or a point far from the mesh.
   /// \throws Too_large for a patch of more vertices than the method's
-  ///         `max_patch_vertices`; for a radius, the vertices within the
-  ///         radius in space are counted (`expmap_cli::vertices_within()`).
+  ///         `max_patch_vertices` (for a radius, the vertices within the
+  ///         radius in space are counted: `expmap_cli::vertices_within()`),
+  ///         and for an exact map whose submesh has more faces than
+  ///         `max_region_faces` (counted once the method is precomputed).
   /// \throws Busy, Precomputation_failed as `Method_cache::acquire()`.
   /// \throws expmap::Invalid_input, expmap::Computation_error from the query.
   Map_response compute(const std::multimap<std::string, std::string>& params) {
@@ -113,6 +117,7 @@ class Map_service {
 
     const Method_cache::Lease lease = m_cache.acquire(*info, r.time_factor);
     const auto leased = std::chrono::steady_clock::now();
+    if (info->max_region_faces) check_region(*info, lease.method(), request, patch, r);
     r.map = lease.method().compute(r.source, patch);
     for (const auto& t : expmap::patch_triangles(m_mesh, r.map)) {
       ++r.triangles;
@@ -129,31 +134,54 @@ class Map_service {
   // and the ways to the map: a smaller patch, or the command line.
   void check_size(const Method_info& info, const Map_request& request, const expmap::Patch& patch,
                   const Map_response& r) const {
-    using expmap_cli::exact_query_mib;
-    using expmap_cli::grouped;
-    using expmap_cli::memory_text;
     const std::size_t limit = info.max_patch_vertices;
     const std::size_t k =
         expmap_cli::estimated_patch_vertices(m_mesh, patch, r.source.face, r.position, limit);
     if (k <= limit) return;
+    using expmap_cli::grouped;
+    const std::string asked =
+        request.radius ? "radius " + number(*request.radius) + " takes in more than " + grouped(limit) +
+                             " vertices (counted within that distance in space)"
+                       : "fraction " + number(*request.fraction) + " is " + grouped(k) + " patch vertices";
+    throw Too_large(asked + "; this server maps at most " + grouped(limit) + " patch vertices with " +
+                        info.name + ways_out(info, request, r, true),
+                    info.name, "patch_vertices", limit, k);
+  }
+
+  // Refuses an exact map whose submesh has more faces than `info` allows:
+  // its memory grows with them (Exact_memory.h).
+  void check_region(const Method_info& info, const Viewer_method& method, const Map_request& request,
+                    const expmap::Patch& patch, const Map_response& r) const {
+    const std::size_t limit = info.max_region_faces;
+    const std::size_t faces = method.region_faces(r.source, patch, limit);
+    if (faces <= limit) return;
+    using expmap_cli::grouped;
+    using expmap_cli::memory_text;
+    throw Too_large("this " + std::string(info.name) +
+                        " map's submesh (the faces within reach of its geodesics) has more than " +
+                        grouped(limit) + " faces, the most this server maps (up to " +
+                        memory_text(expmap_cli::exact_query_mib(static_cast<double>(limit))) +
+                        "; the surface may fold back within its reach)" + ways_out(info, request, r, false),
+                    info.name, "region_faces", limit, faces);
+  }
+
+  // The end of a Too_large message: a smaller patch (with
+  // `largest_fraction`, the largest fraction within the patch limit), or
+  // the command line.
+  std::string ways_out(const Method_info& info, const Map_request& request, const Map_response& r,
+                       bool largest_fraction) const {
     const double n = static_cast<double>(m_mesh.number_of_vertices());
-    const bool exact = std::string(info.name) == "exact";
-    std::string message = request.radius ? "radius " + number(*request.radius) + " takes in more than " +
-                                               grouped(limit) + " vertices (counted within that distance in space)"
-                                         : "fraction " + number(*request.fraction) + " is " + grouped(k) +
-                                               " patch vertices";
-    if (exact && !request.radius)
-      message += ", whose exact map may take " + memory_text(exact_query_mib(static_cast<double>(k)));
-    message += "; this server maps at most " + grouped(limit) + " patch vertices with " + info.name;
-    if (exact) message += " (up to " + memory_text(exact_query_mib(static_cast<double>(limit))) + " each)";
+    const double fraction = std::floor(1e4 * static_cast<double>(info.max_patch_vertices) / n) / 1e4;
     const std::string patch_option = request.radius ? " --radius " + number(*request.radius)
                                                     : " --fraction " + number(*request.fraction);
-    message += ": ask for a fraction of at most " + number(std::floor(1e4 * limit / n) / 1e4) +
-               " or a smaller radius, or compute the map with 'expmap compute " + m_mesh_file +
-               " --method " + info.name + " --source-point " + number(r.position[0]) + "," +
-               number(r.position[1]) + "," + number(r.position[2]) + patch_option +
-               (r.time_factor > 0 ? " --time-factor " + number(r.time_factor) : "") + " -o map.csv'";
-    throw Too_large(message, info.name, limit, k);
+    return ": ask for a smaller patch" +
+           (largest_fraction && fraction < m_limits.max_fraction
+                ? " (a fraction of at most " + number(fraction) + ")"
+                : std::string()) +
+           ", or compute the map with 'expmap compute " + m_mesh_file + " --method " + info.name +
+           " --source-point " + number(r.position[0]) + "," + number(r.position[1]) + "," +
+           number(r.position[2]) + patch_option +
+           (r.time_factor > 0 ? " --time-factor " + number(r.time_factor) : "") + " -o map.csv'";
   }
 
   static std::string number(double x) {
@@ -161,6 +189,7 @@ class Map_service {
     std::snprintf(text, sizeof text, "%.7g", x);
     return text;
   }
+
   const Mesh& m_mesh;
   std::string m_mesh_file;
   expmap::Surface_point_locator<Mesh> m_locator;

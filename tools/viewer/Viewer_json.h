@@ -138,13 +138,13 @@ inline std::string error_json(const std::string& message) {
 }
 
 /// `{"error": message, "limit": {...}}` for a request too large: the
-/// method, its `max_patch_vertices` and the `patch_vertices` asked for.
+/// method, the `quantity` limited ("patch_vertices" or "region_faces"), its
+/// `maximum` and what was `asked` (counted up to `maximum` + 1).
 inline std::string too_large_json(const Too_large& e) {
   Json j;
   j.raw("{").key("error").string(e.what());
-  j.key("limit").raw("{").key("method").string(e.method);
-  j.key("max_patch_vertices").integer(e.max_patch_vertices);
-  j.key("patch_vertices").integer(e.patch_vertices).raw("}}");
+  j.key("limit").raw("{").key("method").string(e.method).key("quantity").string(e.quantity);
+  j.key("maximum").integer(e.maximum).key("asked").integer(e.asked).raw("}}");
   return j.text();
 }
 
@@ -205,9 +205,10 @@ inline std::string map_json(const Map_response& r) {
 }
 
 /// The methods (which take heat's time factor, the largest patch each
-/// maps, for exact the memory that may take), the request limits, and
-/// every precomputation kept with its state, its step while running and its
-/// queries once ready: the page polls it to show progress.
+/// maps, for exact the largest submesh and the memory its map may take),
+/// the mesh's size, the request limits, and every precomputation kept
+/// with its state, its step while running and its queries once ready: the
+/// page polls it to show progress.
 inline std::string status_json(const Map_service& service) {
   Json j;
   j.raw("{").key("methods").array(viewer_methods(), [](Json& o, const Method_info& m) {
@@ -215,10 +216,15 @@ inline std::string status_json(const Map_service& service) {
     o.key("takes_time_factor").boolean(m.takes_time_factor);
     if (m.takes_time_factor) o.key("default_m").number(default_time_factor());
     o.key("max_patch_vertices").integer(m.max_patch_vertices);
-    if (std::string(m.name) == "exact")
-      o.key("max_patch_mib").number(std::round(expmap_cli::exact_query_mib(static_cast<double>(m.max_patch_vertices))));
+    if (m.max_region_faces) {
+      o.key("max_region_faces").integer(m.max_region_faces);
+      o.key("max_map_mib").number(
+          std::round(expmap_cli::exact_query_mib(static_cast<double>(m.max_region_faces))));
+    }
     o.raw("}");
   });
+  j.key("mesh").raw("{").key("vertex_count").integer(service.mesh().number_of_vertices());
+  j.key("face_count").integer(service.mesh().number_of_faces()).raw("}");
   const Request_limits& l = service.limits();
   const Cache_limits& c = service.cache().limits();
   j.key("limits").raw("{").key("max_fraction").number(l.max_fraction);

@@ -41,6 +41,12 @@ class Viewer_method {
   /// The bytes of what it keeps that grow fastest with the mesh (heat's
   /// factors), for deciding how many variants to keep; 0 for the others.
   virtual std::size_t held_bytes() const { return 0; }
+  /// The exact method's `region_faces()` for this query, counted up to
+  /// `at_most` + 1, what its memory grows with; 0 for the other methods.
+  virtual std::size_t region_faces(const Point_on_surface&, const expmap::Patch&,
+                                   std::size_t /*at_most*/) const {
+    return 0;
+  }
 };
 
 /// `Viewer_method` for a method class of the library.
@@ -61,6 +67,12 @@ class Viewer_method_model final : public Viewer_method {
       return m_method.factor_bytes();
     return 0;
   }
+  std::size_t region_faces(const Point_on_surface& source, const expmap::Patch& patch,
+                           std::size_t at_most) const override {
+    if constexpr (std::is_same_v<Method, expmap::Exact_exponential_map<Mesh>>)
+      return m_method.region_faces(source, patch, at_most);
+    return 0;
+  }
 
  private:
   Method m_method;
@@ -73,6 +85,9 @@ struct Method_info {
   bool takes_time_factor;  ///< heat's m
   /// The most patch vertices one request may ask for (doc/viewer.md).
   std::size_t max_patch_vertices;
+  /// The most faces of the exact method's submesh (`region_faces()`); 0:
+  /// no such limit.
+  std::size_t max_region_faces;
   /// Precomputes the method on `mesh` (which must outlive it), reporting
   /// its steps to `progress`; `time_factor` is used only where
   /// `takes_time_factor`.
@@ -84,10 +99,16 @@ struct Method_info {
 /// take a few hundred milliseconds there, and the answer is about 25 MB of
 /// JSON for the page to read.
 constexpr std::size_t max_fast_patch_vertices = 250000;
-/// The most patch vertices of an exact map: up to 1.1 GB each by
+/// The most faces of an exact map's submesh: up to 1.1 GB each by
 /// `expmap_cli::exact_query_mib()`, so that the two that may run at once
-/// stay within 2.2 GB.
-constexpr std::size_t max_exact_patch_vertices = 16000;
+/// stay within 2.2 GB. Such a submesh holds the geodesics of 10,000 to
+/// 18,000 patch vertices, fewer where the surface folds back within reach.
+constexpr std::size_t max_exact_region_faces = 40000;
+/// The most patch vertices of an exact map: a submesh of
+/// `max_exact_region_faces` faces holds about half as many vertices, the
+/// patch's and more (2.2 to 4 faces per patch vertex measured), so a request
+/// beyond is refused before the graph search that counts its submesh.
+constexpr std::size_t max_exact_patch_vertices = 20000;
 
 namespace internal {
 // DEM, DGPC and the exact method copy the mesh into their arrays, one step.
@@ -107,18 +128,20 @@ inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_fa
   return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
 }
 template <class Method>
-constexpr Method_info row(const char* name, const char* label, std::size_t max_patch_vertices) {
-  return {name, label, false, max_patch_vertices, make_method<Method>};
+constexpr Method_info row(const char* name, const char* label, std::size_t max_patch_vertices,
+                          std::size_t max_region_faces = 0) {
+  return {name, label, false, max_patch_vertices, max_region_faces, make_method<Method>};
 }
 }  // namespace internal
 
 /// The methods, in the order the page lists them.
 inline const std::vector<Method_info>& viewer_methods() {
   static const std::vector<Method_info> table{
-      {"heat", "heat method", true, max_fast_patch_vertices, internal::make_heat},
+      {"heat", "heat method", true, max_fast_patch_vertices, 0, internal::make_heat},
       internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM", max_fast_patch_vertices),
       internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC", max_fast_patch_vertices),
-      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact", max_exact_patch_vertices),
+      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact", max_exact_patch_vertices,
+                                                         max_exact_region_faces),
   };
   return table;
 }

@@ -257,11 +257,12 @@ std::string view_help() {
          "GET /api/map?point=X,Y,Z&method=M&fraction=F (or radius=R; m=T for heat).\n"
          "Bad parameters get HTTP 400 with {\"error\": \"...\"}, a patch larger than the\n"
          "method's limit HTTP 413 (exact: " + std::to_string(max_exact_patch_vertices) +
-         " vertices, others: " + std::to_string(max_fast_patch_vertices) + ").\n" +
+         " vertices and " + std::to_string(max_exact_region_faces) + " faces of its submesh;\n"
+         "others: " + std::to_string(max_fast_patch_vertices) + " vertices).\n" +
          std::to_string(limits.queries_per_method) + " queries run on a method at once and " +
          std::to_string(limits.waiting_per_method) + " more wait their turn (at most " +
-         std::to_string(static_cast<int>(limits.max_wait_seconds)) + " s);\n"
-         "beyond that, and while a method is precomputed, HTTP 503 with Retry-After.\n"
+         std::to_string(static_cast<int>(limits.max_wait_seconds)) + " s); beyond\n"
+         "that, and while a method is precomputed, HTTP 503 with Retry-After.\n"
          "See doc/viewer.md.\n";
 }
 

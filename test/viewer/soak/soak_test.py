@@ -85,7 +85,8 @@ def main():
         n = mesh['vertex_count']
         check(n >= 100000, f'the mesh has at least 100,000 vertices ({n})')
         limit = {m['name']: m['max_patch_vertices'] for m in info['methods']}
-        exact_mib = next(m['max_patch_mib'] for m in info['methods'] if m['name'] == 'exact')
+        exact = next(m for m in info['methods'] if m['name'] == 'exact')
+        exact_mib = exact['max_map_mib']
         max_fraction = info['limits']['max_fraction']
         xyz = mesh['vertices']
         lo = [min(xyz[d::3]) for d in range(3)]
@@ -162,9 +163,14 @@ def main():
                     specs.append(('large ' + method, query(method, point(), fraction=rng.uniform(0.05, max_fraction)), {200}))
                 elif r < 0.85:  # exact, a medium patch
                     specs.append(('exact', query('exact', point(), fraction=rng.uniform(0.002, 0.02)), {200}))
-                elif r < 0.92:  # beyond the exact method's limit
-                    q = query('exact', point(), fraction=rng.uniform(1.1 * limit['exact'] / n, max_fraction)) \
-                        if rng.random() < 0.5 else query('exact', point(), radius=rng.uniform(0.3, 1.0) * diagonal)
+                elif r < 0.92:  # beyond the exact method's limits: its patch, or its submesh
+                    kind = rng.randrange(3)
+                    if kind == 0:
+                        q = query('exact', point(), fraction=rng.uniform(1.1 * limit['exact'] / n, max_fraction))
+                    elif kind == 1:
+                        q = query('exact', point(), radius=rng.uniform(0.3, 1.0) * diagonal)
+                    else:  # within the patch limit, but a submesh of 2.2 faces a vertex or more
+                        q = query('exact', point(), fraction=0.975 * limit['exact'] / n)
                     specs.append(('too large', q, {413}))
                 else:  # malformed
                     q = rng.choice([query(method, point(), fraction=0.0), query('nope', point(), fraction=0.01),
@@ -181,11 +187,15 @@ def main():
         run(mixed(300), 4)
         phase = time.monotonic()
         print(f'  300 mixed: {phase - warmed:.1f} s', flush=True)
-        # 2. Two exact maps just inside the limit at once: the most memory
-        #    the server lets queries take.
-        at_limit = 0.98 * limit['exact'] / n
-        run([('exact at its limit', query('exact', point(), fraction=at_limit), {200}) for _ in range(2)], 2)
-        print(f'  2 exact at the limit: {time.monotonic() - phase:.1f} s', flush=True)
+        # 2. Two exact maps near the limit at once (13,000 patch vertices,
+        #    submeshes of about 30,000 to 40,000 faces, or refused where the
+        #    surface folds back): the most memory the server lets queries
+        #    take.
+        near_limit = 13000 / n
+        run([('exact near its limit', query('exact', point(), fraction=near_limit), {200, 413})
+             for _ in range(2)], 2)
+        print(f'  2 exact near the limit: {time.monotonic() - phase:.1f} s, answered ' +
+              ', '.join(str(ans[3]) for ans in answers[-2:]), flush=True)
         phase = time.monotonic()
         # 3. A burst: 24 heat requests at once, more than run and wait; the
         #    rest are turned away (503 with Retry-After) and then fetched with
@@ -224,8 +234,12 @@ def main():
         check(all(isinstance(body.get('error'), str) and body['error'] for kind, q, e, status, h, body in answers
                   if status != 200), 'every refusal says why')
         too_large = [(q, body) for kind, q, e, status, h, body in answers if status == 413]
-        check(all(body['limit']['max_patch_vertices'] == limit['exact'] and 'expmap compute' in body['error']
+        maxima = {'patch_vertices': limit['exact'], 'region_faces': exact['max_region_faces']}
+        check(all(body['limit']['maximum'] == maxima[body['limit']['quantity']] and
+                  body['limit']['asked'] > body['limit']['maximum'] and 'expmap compute' in body['error']
                   for q, body in too_large), f'{len(too_large)} too large requests name the limit and expmap compute')
+        check(any(body['limit']['quantity'] == 'region_faces' for q, body in too_large),
+              'some were refused for their submesh')
         check(all(h.get('Retry-After', '').isdigit() and int(h['Retry-After']) >= 1
                   for k, q, e, status, h, b in answers if status == 503), 'every 503 has a Retry-After')
         check(0 < len(refused) < 24 and len(retried) == len(refused),

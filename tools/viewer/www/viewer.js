@@ -37,8 +37,31 @@ function softwareRendering() {
   return /swiftshader|llvmpipe|software/i.test(name);
 }
 
+// The mesh, read as it arrives: a mesh of millions of vertices is a
+// hundred MB of JSON, so the status line says how far the reading is.
+async function loadMesh(counts) {
+  const response = await fetch('api/mesh');
+  if (!response.ok) throw new Error(`the mesh: HTTP ${response.status}`);
+  const reader = response.body.getReader();
+  const chunks = [];
+  let received = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    chunks.push(value);
+    received += value.length;
+    $('status').textContent = `loading the mesh (${grouped(counts.vertex_count)} vertices, ` +
+      `${grouped(counts.face_count)} faces): ${(received / 1e6).toFixed(1)} MB so far`;
+  }
+  $('status').textContent = 'reading the mesh';
+  const text = await new Blob(chunks).text();
+  $('status').textContent = '';
+  return JSON.parse(text);
+}
+
 async function main() {
-  const [status, mesh] = await Promise.all([getJson('api/status'), getJson('api/mesh')]);
+  const status = await getJson('api/status');
+  const mesh = await loadMesh(status.mesh);
   const methods = status.methods;
   const heat = methods.find((m) => m.takes_time_factor);
   // DGPC first: it factors no matrix, so the first map comes at once.
@@ -89,11 +112,12 @@ async function main() {
   // where it is small enough to matter (the exact method's).
   const limitLine = (name) => {
     const m = methods.find((x) => x.name === name);
-    if (!m || !m.max_patch_mib) return '';
+    if (!m || !m.max_region_faces) return '';
     const fraction = m.max_patch_vertices / mesh.vertex_count;
-    return `maps up to ${grouped(m.max_patch_vertices)} patch vertices here (up to ${bytes(m.max_patch_mib)} ` +
-      `each${fraction < status.limits.max_fraction ? `; fraction ≤ ${format(Math.floor(fraction * 1e4) / 1e4)}` : ''}); ` +
-      'larger: expmap compute';
+    return `maps of up to ${grouped(m.max_region_faces)} submesh faces here (up to ${bytes(m.max_map_mib)}),\n` +
+      `at most ${grouped(m.max_patch_vertices)} patch vertices` +
+      (fraction < status.limits.max_fraction ? ` (fraction ≤ ${format(Math.floor(fraction * 1e4) / 1e4)})` : '') +
+      '; larger: expmap compute';
   };
   const info = (k, lines, error) => {
     $(`info-${k}`).innerHTML = '';
@@ -133,8 +157,12 @@ async function main() {
       for (const k of [0, 1]) info(k, 'click the surface to place the source');
       return;
     }
-    clients[0].request(query(0));
-    if (comparing()) clients[1].request(query(1));
+    // A view without a map yet says so (the status line below says what
+    // the server is busy with, a precomputation on a large mesh).
+    for (const k of comparing() ? [0, 1] : [0]) {
+      if (!panes[k].lastMap) info(k, 'waiting for the map');
+      clients[k].request(query(k));
+    }
   };
 
   const patchChanged = () => { panes.forEach((p) => p.resetScale()); update(); };
