@@ -60,10 +60,10 @@ inline std::string map_options_help(const std::string& method_list) {
        "  --method M           default: heat; one of\n";
   h << method_list;
   h << "  --force              exact only: try a map even where its memory estimate\n"
-       "                       (about 1 GB at 16,000 patch vertices, 3.3 GB at 32,000;\n"
-       "                       per thread in a batch) exceeds the memory available;\n"
-       "                       without it such a run stops with an error before it\n"
-       "                       starts\n"
+       "                       (by the faces of its submesh: about 1 GB at 40,000,\n"
+       "                       some 15,000 patch vertices; per thread in a batch)\n"
+       "                       exceeds the memory available; without it such a run\n"
+       "                       stops with an error before its first map\n"
        "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
        "                       length; larger is smoother (default: "
     << defaults.time_factor

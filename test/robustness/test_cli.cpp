@@ -228,10 +228,10 @@ BOOST_AUTO_TEST_CASE(version_is_the_headers) {
   check_error("--version extra", 2);
 }
 
-// An exact run estimated beyond the memory available stops before it starts
-// unless forced. Under an address-space limit of 2 GB, 48 exact maps at
-// once (one per thread) are estimated at 40 MiB each, 2.0 GB, though these
-// are tiny.
+// An exact run estimated beyond the memory available stops before its
+// first map unless forced. Under an address-space limit of 2 GB, 48 exact
+// maps at once (one per thread) are estimated at 40 MiB each, 2.0 GB,
+// though these are tiny.
 BOOST_AUTO_TEST_CASE(exact_maps_beyond_the_memory_available_need_force) {
   const std::string limited = "ulimit -v 2000000; ";
   const std::string batch = "batch " + file("grid.off") +
