@@ -73,6 +73,7 @@ struct Compute_arguments {
   bool triangulate = true;  // --no-triangulate refuses polygonal faces instead
   bool repair = false;
   bool trim_folds = false;  // --trim-folds: each map cut to its fold-free disk
+  bool force = false;       // --force: an exact map beyond its memory estimate is tried anyway
   std::vector<Output> outputs;
   bool help = false;
 };
@@ -310,9 +311,9 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
         a.repair = true;
       else
         a.triangulate = name == "--triangulate";
-    } else if (name == "--trim-folds") {
+    } else if (name == "--trim-folds" || name == "--force") {
       if (inline_value) throw Usage_error(name + " takes no value");
-      a.trim_folds = true;
+      (name == "--force" ? a.force : a.trim_folds) = true;
     } else if (name == "-o" || name == "--output") {
       const std::string path = take_value();
       a.outputs.push_back({path, output_format(path)});

@@ -59,7 +59,12 @@ inline std::string map_options_help(const std::string& method_list) {
        "method:\n"
        "  --method M           default: heat; one of\n";
   h << method_list;
-  h << "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
+  h << "  --force              exact only: try a map even where its memory estimate\n"
+       "                       (by the faces of its submesh: about 1 GB at 40,000,\n"
+       "                       some 15,000 patch vertices; per thread in a batch)\n"
+       "                       exceeds the memory available; without it such a run\n"
+       "                       stops with an error before its first map\n"
+       "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
        "                       length; larger is smoother (default: "
     << defaults.time_factor
     << ")\n"
@@ -117,7 +122,8 @@ inline std::string map_options_help(const std::string& method_list) {
 inline std::string compute_help(const std::string& method_list) {
   return "usage: expmap compute MESH (--source V | --source-point X,Y,Z |\n"
          "                      --source-face F --barycentric A,B,C)\n"
-         "                      (--radius R | --fraction F | --vertices K) [--method M] [--time-factor T]\n"
+         "                      (--radius R | --fraction F | --vertices K) [--method M] [--force]\n"
+         "                      [--time-factor T]\n"
          "                      [--laplacian L] [--vertex-area A]\n"
          "                      [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                      [--near-source-blend B,E] [--fallback F] [--reference X,Y,Z]\n"
@@ -148,7 +154,8 @@ inline std::string compute_help(const std::string& method_list) {
          "                             by distance, flipped triangles in red\n"
          "  -h, --help           this help\n"
          "\n"
-         "Options also accept --name=value. A summary (mesh size, timings, patch size,\n"
+         "Options also accept --name=value. The heat method's precomputation shows its\n"
+         "progress on stderr when that is a terminal. A summary (mesh size, timings, patch size,\n"
          "max r, flipped triangles, fold-free radius) goes to stdout; errors go to stderr as\n"
          "'expmap: error: ...' with exit status 1 (runtime) or 2 (usage).\n";
 }
@@ -157,7 +164,7 @@ inline std::string compute_help(const std::string& method_list) {
 inline std::string batch_help(const std::string& method_list) {
   return "usage: expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
          "                    (--radius R | --fraction F | --vertices K)\n"
-         "                    [--method M] [--threads N] [--time-factor T]\n"
+         "                    [--method M] [--force] [--threads N] [--time-factor T]\n"
          "                    [--laplacian L] [--vertex-area A]\n"
          "                    [--factor-precision P] [--query-threads N] [--angles A]\n"
          "                    [--near-source-blend B,E] [--fallback F]\n"

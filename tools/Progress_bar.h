@@ -4,9 +4,12 @@
 #define EXPMAP_TOOLS_PROGRESS_BAR_H
 
 /// \file Progress_bar.h
-/// A one-line progress bar on stderr for `expmap batch`: maps done, maps
-/// per second and the time left. Only when stderr is a terminal: a log file
-/// or a pipe gets nothing, not a stream of carriage returns.
+/// One-line progress displays on stderr: the maps of `expmap batch` (maps
+/// done, maps per second and the time left) and the steps of the heat
+/// method's precomputation. Only when stderr is a terminal: a log file or a
+/// pipe gets nothing, not a stream of carriage returns.
+
+#include <expmap/Precomputation_progress.h>
 
 #include <chrono>
 #include <cstddef>
@@ -62,6 +65,37 @@ class Progress_bar {
   std::size_t m_total;
   bool m_shown;
   Clock::time_point m_start, m_last_draw;
+};
+
+/// The heat method's precomputation as one line, redrawn at each step:
+/// "precomputing: Poisson factorization (about 41% done, 4.2 s)", and
+/// erased when it is done.
+class Precomputation_line {
+ public:
+  Precomputation_line() : m_shown(isatty(fileno(stderr)) != 0) {}
+
+  /// The callback for `Heat_options::progress`; it refers to this object,
+  /// which must outlive the precomputation.
+  expmap::Precomputation_callback callback() {
+    return [this](const char* step, double fraction) {
+      if (!m_shown) return;
+      const double seconds = std::chrono::duration<double>(Clock::now() - m_start).count();
+      char line[width + 1];
+      if (fraction >= 1)
+        std::snprintf(line, sizeof line, "%s", "");
+      else
+        std::snprintf(line, sizeof line, "precomputing: %s (about %.0f%% done, %.1f s)", step,
+                      100 * fraction, seconds);
+      std::fprintf(stderr, "\r%-*s%s", width, line, fraction >= 1 ? "\r" : "");
+      std::fflush(stderr);
+    };
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  static constexpr int width = 79;
+  bool m_shown;
+  Clock::time_point m_start = Clock::now();
 };
 
 }  // namespace expmap_cli

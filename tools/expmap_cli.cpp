@@ -6,8 +6,10 @@
 // 2 usage error (options and their values). Every error is one line on
 // stderr starting with "expmap: error: ".
 
+#include "Batch_output.h"
 #include "Batch_table.h"
 #include "Command_line.h"
+#include "Exact_memory.h"
 #include "Help_text.h"
 #include "Point_sources.h"
 #include "Progress_bar.h"
@@ -57,6 +59,7 @@ using Surface_point = expmap::Surface_point<Mesh::Face_index>;
 /// The source of `expmap compute`: a vertex or a point of a face.
 using Source = std::variant<Mesh::Vertex_index, Surface_point>;
 using expmap_cli::Batch_arguments;
+using expmap_cli::Batch_output;
 using expmap_cli::Compute_arguments;
 using expmap_cli::Runtime_error;
 using expmap_cli::Usage_error;
@@ -72,13 +75,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 // Precomputes with `make()` and answers one query, timing both: the two
-// numbers a user of a precompute-once method cares about.
-template <class Make, class Query>
-Run timed_run(Make make, const Source& source, const expmap::Patch& patch, const Query& query) {
+// numbers a user of a precompute-once method cares about. `check(method)`
+// comes between them.
+template <class Make, class Check, class Query>
+Run timed_run(Make make, Check check, const Source& source, const expmap::Patch& patch,
+              const Query& query) {
   Run run;
   auto start = std::chrono::steady_clock::now();
   const auto method = make();
   run.precompute_seconds = seconds_since(start);
+  check(method);
   start = std::chrono::steady_clock::now();
   run.map = std::visit([&](const auto& s) { return method.compute(s, patch, query); },
                        source);
@@ -131,7 +137,10 @@ Method_class make_method(const Mesh& mesh, const Compute_arguments&) {
 }
 template <>
 Heat make_method<Heat>(const Mesh& mesh, const Compute_arguments& a) {
-  return Heat(mesh, heat_options(a));
+  expmap::Heat_options options = heat_options(a);
+  expmap_cli::Precomputation_line line;
+  options.progress = line.callback();
+  return Heat(mesh, options);
 }
 
 // The method's settings in words for the summary and the SVG caption; ""
@@ -162,86 +171,39 @@ std::string settings_description<Heat>(const Compute_arguments& a) {
   return d.str();
 }
 
+// Before maps of `method`, `maps_at_once` at a time, from `sources`: an
+// exact run whose largest submesh may not fit in memory is refused
+// (Exact_memory.h); the other methods' maps need no such check.
+template <class Method_class>
+void check_memory(const Method_class&, const Compute_arguments&, const std::vector<Source>&,
+                  const expmap::Patch&, unsigned) {}
+template <>
+void check_memory(const expmap::Exact_exponential_map<Mesh>& method, const Compute_arguments& a,
+                  const std::vector<Source>& sources, const expmap::Patch& patch,
+                  unsigned maps_at_once) {
+  const std::size_t cap = expmap_cli::exact_region_faces_to_count(maps_at_once);
+  if (cap == 0) return;  // the memory available is not known
+  std::size_t largest = 0;
+  for (const Source& source : sources) {
+    try {
+      const auto count = [&](const auto& s) { return method.region_faces(s, patch, cap); };
+      largest = std::max(largest, std::visit(count, source));
+    } catch (const expmap::Invalid_input&) {
+      // The query fails with the same message, for this source only.
+    }
+  }
+  expmap_cli::check_exact_memory(largest, maps_at_once, a.force);
+}
+
 template <class Method_class>
 Run run_one(const Mesh& mesh, const Compute_arguments& a, const Source& source,
             const expmap::Patch& patch, const expmap::Query_options& query) {
-  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); }, source, patch,
-                      query_settings<Method_class>(a, query));
+  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); },
+                      [&](const Method_class& m) { check_memory(m, a, {source}, patch, 1); }, source,
+                      patch, query_settings<Method_class>(a, query));
   run.description = settings_description<Method_class>(a);
   return run;
 }
-
-/// Where the maps of a batch go: CSV rows as each chunk of maps arrives (so
-/// memory stays bounded), the columns of `.npz` outputs at the end (they
-/// hold the whole table). Files are created on the first chunk, after the
-/// precomputation succeeded, and removed again if the batch does not finish.
-class Batch_output {
- public:
-  // `file_index` as in Mesh_reading_report: the outputs speak of the file's
-  // vertices, not the mesh's. With `point_sources` a map's source is the
-  // position of its point in the list, as it is.
-  Batch_output(const std::vector<expmap_cli::Output>& outputs,
-               const std::vector<std::size_t>& file_index, bool point_sources)
-      : m_outputs(outputs), m_file_index(file_index), m_point_sources(point_sources) {}
-  Batch_output(const Batch_output&) = delete;
-  Batch_output& operator=(const Batch_output&) = delete;
-  ~Batch_output() {
-    if (m_finished) return;
-    m_csv.clear();
-    std::error_code ignored;
-    for (const auto& output : m_outputs) std::filesystem::remove(output.path, ignored);
-  }
-
-  // `chunk` numbers vertices as the mesh does.
-  void write(expmap_cli::Batch_table chunk) {
-    if (!m_point_sources)
-      for (std::int64_t& s : chunk.sources) s = static_cast<std::int64_t>(m_file_index[s]);
-    for (std::int64_t& v : chunk.vertex) v = static_cast<std::int64_t>(m_file_index[v]);
-    if (!m_opened) open_csv();
-    for (std::ofstream& out : m_csv) expmap_cli::write_csv_rows(out, chunk);
-    if (has(expmap_cli::Output_format::npz)) m_table.append(chunk);
-  }
-
-  void finish() {
-    if (!m_opened) open_csv();  // a batch of no sources still gets its header
-    for (const auto& output : m_outputs) {
-      if (output.format != expmap_cli::Output_format::npz) continue;
-      std::ofstream out(output.path, std::ios::binary);
-      expmap_cli::write_npz(out, m_table);
-      close_checked(out, output.path);
-    }
-    std::size_t k = 0;
-    for (const auto& output : m_outputs)
-      if (output.format == expmap_cli::Output_format::csv) close_checked(m_csv[k++], output.path);
-    m_finished = true;
-  }
-
- private:
-  bool has(expmap_cli::Output_format format) const {
-    return std::any_of(m_outputs.begin(), m_outputs.end(),
-                       [&](const expmap_cli::Output& o) { return o.format == format; });
-  }
-  void open_csv() {
-    for (const auto& output : m_outputs) {
-      if (output.format != expmap_cli::Output_format::csv) continue;
-      m_csv.emplace_back(output.path);
-      if (!m_csv.back()) throw Runtime_error("cannot create output file '" + output.path + "'");
-      m_csv.back() << "source,vertex,r,theta,u,v,fold_free_radius\n";
-    }
-    m_opened = true;
-  }
-  static void close_checked(std::ofstream& out, const std::string& path) {
-    out.close();
-    if (!out) throw Runtime_error("could not write all of '" + path + "'");
-  }
-
-  std::vector<expmap_cli::Output> m_outputs;
-  const std::vector<std::size_t>& m_file_index;
-  bool m_point_sources;
-  std::vector<std::ofstream> m_csv;
-  expmap_cli::Batch_table m_table;
-  bool m_opened = false, m_finished = false;
-};
 
 struct Batch_run {
   std::string description;  // as Run::description
@@ -289,6 +251,14 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
   const auto method = make_method<Method_class>(mesh, a);
   run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
+  std::vector<Source> sampled;  // 16 sources: radius patches differ from source to source
+  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
+    sampled.push_back(sources.points.empty()
+                          ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(sources.vertices[i])))
+                          : Source(sources.points[i]));
+  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  check_memory(method, a, sampled, patch,
+               static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
 
   start = std::chrono::steady_clock::now();
   expmap_cli::Progress_bar bar(sources.size());
@@ -467,6 +437,7 @@ void write_output(const expmap_cli::Output& output, const Input& input, const Ru
 // costly part: its settings apply to it, and the outputs' folders exist.
 const Method& checked_method(const Compute_arguments& a) {
   const Method& method = find_method(a.method);
+  if (a.force && a.method != "exact") throw Usage_error("--force applies only to --method exact");
   if (!method.takes_heat_options && (a.time_factor || a.laplacian ||
                                      a.vertex_area || a.factor_precision || a.query_threads ||
                                      a.angles || a.near_source_blend || a.fallback))
@@ -626,6 +597,7 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   query.reference_direction = a.reference;
   query.trim_folds = a.trim_folds;
   query.find_fold_free_radius = true;  // a column of every output
+  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
 
   Batch_output output(a.outputs, input.report.file_index, !sources.points.empty());
   Batch_run run = with_repair_hint(
@@ -639,7 +611,7 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   std::printf("precompute:  %.3f s\n", run.precompute_seconds);
   std::printf("maps:        %zu of %zu sources in %.3f s on %u threads, %.1f maps/s\n", maps,
               sources.size(), run.batch_seconds,
-              a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency()),
+              threads,
               run.batch_seconds > 0 ? static_cast<double>(sources.size()) / run.batch_seconds : 0.0);
   std::printf("rows:        %zu (%.1f patch vertices per map)\n", run.rows,
               maps ? static_cast<double>(run.rows) / static_cast<double>(maps) : 0.0);

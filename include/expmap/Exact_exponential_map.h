@@ -58,7 +58,9 @@ namespace expmap {
 /// them (an upper bound of their geodesic distances; from a point, that of
 /// its nearest corner plus the corner's distance from the point). So a query costs
 /// about what the exact algorithm costs on that region, which grows faster
-/// than linearly with it; meant as a reference, not for interactive use.
+/// than linearly with it (up to about 1 GB of memory at 40,000 faces, 2.5 GB at
+/// 83,000: doc/viewer.md); `region_faces()` counts its faces before a
+/// query. Meant as a reference, not for interactive use.
 ///
 /// Patches: a radius patch holds every vertex within geodesic distance R;
 /// a count or fraction patch the k nearest by geodesic distance; a vertex
@@ -107,6 +109,35 @@ class Exact_exponential_map
   ///         source's component.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query_options& query = {}) const;
+
+  /// The number of faces of the submesh a query from `source` with `patch`
+  /// builds its sequence tree on (see the class's cost), found without
+  /// building the tree: the query's memory and time grow with it, faster
+  /// than linearly (doc/viewer.md measures them). Counts up to `at_most`
+  /// and stops there, returning `at_most` + 1, so that asking about a
+  /// large patch costs no more than its graph search; 0 for a patch of no
+  /// vertex but the source.
+  /// \throws Invalid_input as `compute()`.
+  std::size_t region_faces(typename Front::vertex_descriptor source, const Patch& patch,
+                           std::size_t at_most = static_cast<std::size_t>(-1)) const {
+    const internal::Checked_query q =
+        internal::checked_query(m_indexed.arrays, m_indexed.index_of(source), patch, {});
+    auto ws = workspace();
+    return vertex_submesh(q, patch, *ws, at_most) ? ws->ball.face.size() : 0;
+  }
+
+  /// As above, from a point of a face (`compute(const Surface_point&, ...)`).
+  std::size_t region_faces(const Surface_point<typename Front::face_descriptor>& source,
+                           const Patch& patch,
+                           std::size_t at_most = static_cast<std::size_t>(-1)) const {
+    const internal::Point_source p = this->point_source(source);
+    if (p.vertex >= 0)
+      return region_faces(m_indexed.descriptors[m_indexed.arrays.to_original(p.vertex)], patch,
+                          at_most);
+    const internal::Checked_query q = internal::checked_point_query(m_indexed.arrays, p, patch, {});
+    auto ws = workspace();
+    return point_submesh(p, q, patch, *ws, at_most) ? ws->ball.face.size() : 0;
+  }
 
  private:
   friend Front;  // calls compute_at_point()
@@ -168,6 +199,21 @@ class Exact_exponential_map
   // Radius of the Euclidean ball that holds the geodesics the patch needs.
   double ball_radius(int s, const Patch& patch, std::size_t target, const std::vector<int>& wanted,
                      Workspace& ws) const;
+
+  // The submesh of a query from the vertex `q.source` (or the point
+  // `point`) in `ws.ball`, stopped past `max_faces` faces; false, and none,
+  // for a patch of no vertex but the source. Marks the wanted vertices of a
+  // vertex-set patch in `ws.wanted` and clears `ws.entries`.
+  bool vertex_submesh(const internal::Checked_query& q, const Patch& patch, Workspace& ws,
+                      std::size_t max_faces) const;
+  bool point_submesh(const internal::Point_source& point, const internal::Checked_query& q,
+                     const Patch& patch, Workspace& ws, std::size_t max_faces) const;
+
+  auto workspace() const {
+    return m_workspaces.acquire([this] {
+      return std::make_unique<Workspace>(this->number_of_vertices(), m_indexed.arrays.face.size());
+    });
+  }
 
   using Front::m_indexed;
   mutable internal::Workspace_pool<Workspace> m_workspaces;
@@ -249,28 +295,58 @@ void Exact_exponential_map<TM, VPM>::to_submesh(const internal::Ball_submesh& ba
 }
 
 template <class TM, class VPM>
+bool Exact_exponential_map<TM, VPM>::vertex_submesh(const internal::Checked_query& q,
+                                                    const Patch& patch, Workspace& ws,
+                                                    std::size_t max_faces) const {
+  ws.entries.clear();
+  ws.wanted.next_query();
+  for (int v : q.wanted) ws.wanted.mark(v, 0);
+  if ((q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
+    return false;
+  // A hair more than the radius, so that rounding cannot drop a face that
+  // a geodesic of length exactly R touches.
+  const double radius = ball_radius(q.source, patch, q.target, q.wanted, ws) * (1 + 1e-9);
+  internal::extract_ball_submesh(m_indexed.arrays, q.source, radius, ws.face_marks, ws.vertex_marks,
+                                 ws.face_queue, ws.ball, max_faces);
+  return true;
+}
+
+template <class TM, class VPM>
+bool Exact_exponential_map<TM, VPM>::point_submesh(const internal::Point_source& point,
+                                                   const internal::Checked_query& q,
+                                                   const Patch& patch, Workspace& ws,
+                                                   std::size_t max_faces) const {
+  using internal::operator-;
+  ws.entries.clear();
+  ws.wanted.next_query();
+  for (int v : q.wanted) ws.wanted.mark(v, 0);
+  if ((q.by_count && q.target == 0) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
+    return false;
+  // The vertices the graph search from the nearest corner reaches are
+  // within that distance plus the corner's from the point; so are the
+  // patch's vertices and their geodesics.
+  const double reach =
+      patch.kind() == Patch::Kind::geodesic_radius
+          ? patch.radius()
+          : internal::norm(m_indexed.arrays.point[q.source] - point.position) +
+                ball_radius(q.source, patch, q.target, q.wanted, ws);
+  internal::extract_ball_submesh_around_point(m_indexed.arrays, point.face, point.position,
+                                              reach * (1 + 1e-9), ws.face_marks, ws.vertex_marks,
+                                              ws.face_queue, ws.ball, max_faces);
+  return true;
+}
+
+template <class TM, class VPM>
 typename Exact_exponential_map<TM, VPM>::Result
 Exact_exponential_map<TM, VPM>::compute_by_index(std::size_t source_index, const Patch& patch,
                                                   const Query_options& query) const {
   const internal::Checked_query q =
       internal::checked_query(m_indexed.arrays, source_index, patch, query);
   const int s = q.source;
-
-  auto ws = m_workspaces.acquire([this] {
-    return std::make_unique<Workspace>(this->number_of_vertices(), m_indexed.arrays.face.size());
-  });
-  ws->entries.clear();
-  ws->wanted.next_query();
-  for (int v : q.wanted) ws->wanted.mark(v, 0);
-  if ((q.by_count && q.target <= 1) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
+  auto ws = workspace();
+  if (!vertex_submesh(q, patch, *ws, static_cast<std::size_t>(-1)))
     return internal::assemble_local_map(m_indexed.arrays, s, ws->entries, m_indexed.descriptors,
                                         q.frame, query, ws->map_position);
-
-  // A hair more than the radius, so that rounding cannot drop a face that
-  // a geodesic of length exactly R touches.
-  const double radius = ball_radius(s, patch, q.target, q.wanted, *ws) * (1 + 1e-9);
-  internal::extract_ball_submesh(m_indexed.arrays, s, radius, ws->face_marks, ws->vertex_marks,
-                                 ws->face_queue, ws->ball);
   Submesh submesh;
   to_submesh(ws->ball, submesh);
   Shortest_paths shortest_paths(submesh);
@@ -292,28 +368,11 @@ Exact_exponential_map<TM, VPM>::compute_at_point(const internal::Point_source& p
   const double reference_angle =
       internal::point_one_ring(m_indexed.arrays, point, q.frame).ring.reference_angle;
 
-  auto ws = m_workspaces.acquire([this] {
-    return std::make_unique<Workspace>(this->number_of_vertices(), m_indexed.arrays.face.size());
-  });
-  ws->entries.clear();
-  ws->wanted.next_query();
-  for (int v : q.wanted) ws->wanted.mark(v, 0);
-  if ((q.by_count && q.target == 0) || (q.kind == Patch::Kind::vertex_set && q.wanted.empty()))
+  auto ws = workspace();
+  if (!point_submesh(point, q, patch, *ws, static_cast<std::size_t>(-1)))
     return internal::assemble_local_map(m_indexed.arrays, q.source, ws->entries,
                                         m_indexed.descriptors, q.frame, query, ws->map_position,
                                         false);
-
-  // The vertices the graph search from the nearest corner reaches are
-  // within that distance plus the corner's from the point; so are the
-  // patch's vertices and their geodesics.
-  const double reach =
-      patch.kind() == Patch::Kind::geodesic_radius
-          ? patch.radius()
-          : internal::norm(m_indexed.arrays.point[q.source] - point.position) +
-                ball_radius(q.source, patch, q.target, q.wanted, *ws);
-  internal::extract_ball_submesh_around_point(m_indexed.arrays, point.face, point.position,
-                                              reach * (1 + 1e-9), ws->face_marks,
-                                              ws->vertex_marks, ws->face_queue, ws->ball);
   Submesh submesh;
   to_submesh(ws->ball, submesh);
 

@@ -88,15 +88,22 @@ class Heat_exponential_map
   /// As above, with an explicit vertex point map.
   Heat_exponential_map(const TriangleMesh& tm, const Heat_options& options, Vertex_point_map vpm)
       : Front(tm, vpm), m_options(checked(options)) {
+    using Step = internal::heat::Precomputation_step;
     // Queries work on vertices renumbered along a space-filling curve (see
     // internal::locality_order); sources, patches and results use the
     // user's indices.
+    internal::heat::report(m_options, Step::locality_order);
     m_indexed.arrays = internal::renumbered_mesh_arrays(m_indexed.arrays,
                                                         internal::locality_order(m_indexed.arrays));
     m_factors = internal::heat::factor_heat_operators<Solver>(m_indexed.arrays, m_options);
     // One workspace ready for the first query: touching its O(n) memory for
     // the first time costs page faults that belong to the precomputation.
+    internal::heat::report(m_options, Step::query_workspace);
     m_workspaces.acquire([this] { return make_workspace(); });
+    internal::heat::report(m_options, Step::done);
+    // The callback may refer to its caller's objects, which may not outlive
+    // the constructor; the object never calls it again.
+    m_options.progress = nullptr;
   }
 
   /// Geodesic polar coordinates around the vertex of index `source` in

@@ -12,6 +12,7 @@
 #include <expmap/Errors.h>
 #include <expmap/Factor_precision.h>
 #include <expmap/Patch.h>
+#include <expmap/Precomputation_progress.h>
 
 #include <cmath>
 #include <string>
@@ -107,6 +108,10 @@ struct Heat_options {
   /// separators (meshes above about 100k vertices): fewer entries read per
   /// query. 0 keeps every block dense. At most 1e-10.
   double poisson_compression_tolerance = 1e-14;
+  /// Reports the precomputation's steps as it runs (see
+  /// `Precomputation_callback`); empty: no reports. Only the constructor
+  /// calls it: the object keeps no copy (its `options()` have none).
+  Precomputation_callback progress;
 };
 
 /// \ingroup PkgExpmapRef

@@ -5,7 +5,12 @@
 #include <expmap/Exact_exponential_map.h>
 #include <expmap/Geodesic_polar_coordinates.h>
 
+#include <CGAL/squared_distance_3.h>
+
 #include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <iterator>
 
 #include "baseline_fixtures.h"
 
@@ -82,6 +87,43 @@ BOOST_AUTO_TEST_CASE(same_on_surface_mesh_and_polyhedron) {
 BOOST_AUTO_TEST_CASE(patch_kinds) { check_patch_kinds<Exact>(true); }
 
 BOOST_AUTO_TEST_CASE(bad_input) { check_bad_input<Exact>(); }
+
+// The submesh a query builds its tree on, counted without building it: for
+// a radius patch on a plane, every face within the radius of the source
+// (point to triangle), counted one by one; from a vertex as from a point at
+// that vertex; stopped just past a limit; none for a patch of the source
+// alone, all faces for the whole mesh.
+BOOST_AUTO_TEST_CASE(region_faces_count_the_submesh) {
+  const auto mesh = to_mesh<Surface_mesh>(expmap_analytic::make_grid(40, 40, 2.0, 2.0));
+  const Exact<Surface_mesh> exact(mesh);
+  const auto source = *std::next(mesh.vertices().begin(), 20 * 41 + 17);
+  const Point& s = mesh.point(source);
+  // The point of a face around the source at that vertex: coordinate 1
+  // at its corner (in the order of Surface_point).
+  expmap::Surface_point<Surface_mesh::Face_index> at_vertex{mesh.face(mesh.halfedge(source)), {}};
+  const auto first = mesh.halfedge(at_vertex.face);
+  const Surface_mesh::Vertex_index corners[3] = {mesh.source(first), mesh.target(first),
+                                                 mesh.target(mesh.next(first))};
+  for (int k = 0; k < 3; ++k) at_vertex.barycentric[k] = corners[k] == source ? 1.0 : 0.0;
+  // Radii off the grid's spacing (0.05): no face is at the radius itself.
+  for (const double radius : {0.07, 0.31, 0.83}) {
+    std::size_t within = 0;
+    for (const auto f : mesh.faces()) {
+      const auto h = mesh.halfedge(f);
+      const Kernel::Triangle_3 t(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
+                                 mesh.point(mesh.target(mesh.next(h))));
+      within += CGAL::squared_distance(s, t) <= radius * radius;
+    }
+    BOOST_TEST_CONTEXT("radius " << radius) {
+      const auto patch = expmap::Patch::geodesic_radius(radius);
+      BOOST_TEST(exact.region_faces(source, patch) == within);
+      BOOST_TEST(exact.region_faces(at_vertex, patch) == within);
+      BOOST_TEST(exact.region_faces(source, patch, 10) == std::min<std::size_t>(within, 11));
+    }
+  }
+  BOOST_TEST(exact.region_faces(source, expmap::Patch::vertex_count(1)) == 0u);
+  BOOST_TEST(exact.region_faces(source, expmap::Patch::fraction(1.0)) == mesh.number_of_faces());
+}
 
 BOOST_AUTO_TEST_CASE(concurrent_queries) { check_concurrent_queries<Exact>(); }
 

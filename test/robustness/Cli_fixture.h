@@ -79,10 +79,11 @@ struct Cli_fixture {
       }
   }
 
-  /// Runs `expmap ARGS` with stdout and stderr captured into the folder;
+  /// Runs `expmap ARGS` with stdout and stderr captured into the folder,
+  /// after the shell commands `setup` (e.g. "ulimit -v 2000000; ");
   /// returns the exit status (-1 if it did not exit normally, e.g. crashed).
-  int run(const std::string& args) {
-    const std::string command = "'" + std::string(EXPMAP_CLI_PATH) + "' " + args + " >'" +
+  int run(const std::string& args, const std::string& setup = "") {
+    const std::string command = setup + "'" + std::string(EXPMAP_CLI_PATH) + "' " + args + " >'" +
                                 (dir / "stdout.txt").string() + "' 2>'" +
                                 (dir / "stderr.txt").string() + "'";
     const int status = std::system(command.c_str());

@@ -209,7 +209,7 @@ BOOST_AUTO_TEST_CASE(help_documents_every_option) {
         "--laplacian", "--vertex-area", "--factor-precision", "--angles",
         "--query-threads", "--near-source-blend",
         "--reference",
-        "--no-triangulate", "--repair", "--trim-folds", "--output", "fold-free"})
+        "--no-triangulate", "--repair", "--trim-folds", "--force", "--output", "fold-free"})
     BOOST_TEST(help.find(option) != std::string::npos, option);
 }
 
@@ -226,6 +226,28 @@ BOOST_AUTO_TEST_CASE(version_is_the_headers) {
   BOOST_TEST_REQUIRE(run("--help") == 0);
   BOOST_TEST(out().find("--version") != std::string::npos);
   check_error("--version extra", 2);
+}
+
+// An exact run estimated beyond the memory available stops before its
+// first map unless forced. Under an address-space limit of 2 GB, 48 exact
+// maps at once (one per thread) are estimated at 40 MiB each, 2.0 GB,
+// though these are tiny.
+BOOST_AUTO_TEST_CASE(exact_maps_beyond_the_memory_available_need_force) {
+  const std::string limited = "ulimit -v 2000000; ";
+  const std::string batch = "batch " + file("grid.off") +
+                            " --sources all --method exact --vertices 3 --threads 48 -o " + file("b.csv");
+  BOOST_TEST(run(batch, limited) == 1);
+  BOOST_TEST(err().rfind("expmap: error: an exact map of this patch builds its sequence tree on ", 0) == 0, err());
+  BOOST_TEST(err().find(", 48 at once (one per thread) 2.0 GB, by the measured estimate") != std::string::npos);
+  BOOST_TEST(err().find("choose a smaller patch or fewer --threads, or give --force") != std::string::npos);
+  BOOST_TEST(!std::filesystem::exists(dir / "b.csv"));
+  BOOST_TEST(run(batch + " --force", limited) == 0);
+  BOOST_TEST(err().rfind("expmap: warning: an exact map of this patch", 0) == 0, err());
+  BOOST_TEST(err().find("trying anyway (--force)") != std::string::npos);
+  BOOST_TEST(read_lines(dir / "b.csv").size() == 1 + 49 * 3u);
+  // --force is only for the exact method.
+  check_error("compute " + file("grid.off") + " --source 0 --vertices 3 --force -o " + file("a.csv"), 2);
+  BOOST_TEST(err().find("--force applies only to --method exact") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(runtime_errors_exit_with_status_1) {

@@ -59,6 +59,14 @@ try {
     '/api/mesh gives three coordinates per vertex and three corners per face');
   const methodNames = status.methods.map((m) => m.name).join(',');
   check(methodNames === 'heat,dem,dgpc,exact', `/api/status lists the four methods (got ${methodNames})`);
+  check(status.mesh.vertex_count === mesh.vertex_count && status.mesh.face_count === mesh.face_count,
+    '/api/status gives the mesh\'s size');
+  const exactInfo = status.methods.find((m) => m.name === 'exact');
+  check(status.methods.every((m) => m.max_patch_vertices > 0) && exactInfo.max_patch_vertices === 20000 &&
+    exactInfo.max_region_faces === 40000 && exactInfo.max_map_mib > 0 &&
+    status.limits.queries_per_method > 0 && status.limits.waiting_per_method >= 0 &&
+    status.limits.max_wait_seconds > 0,
+  `/api/status gives each method's limit and the queue's (got ${JSON.stringify(status.limits)}, ${JSON.stringify(exactInfo)})`);
 
   // Bad requests: HTTP 400 with a message, nothing else.
   const v0 = mesh.vertices.slice(0, 3).join(',');
@@ -220,6 +228,14 @@ try {
   await page.mouse.up();
   await page.waitForTimeout(300);
   check((await drawn(0)) >= start + 2, `dragging drew ${(await drawn(0)) - start} maps`);
+
+  // The exact method's limit shows before any map of it is asked for.
+  await page.goto(`${server.url}?method=exact&fraction=0.05`);
+  await page.waitForFunction(() => document.getElementById('info-0').textContent.includes('submesh faces here'),
+    null, { timeout: 20000 });
+  const limitText = await page.evaluate(() => document.getElementById('info-0').textContent);
+  check(limitText.includes('maps of up to 40,000 submesh faces here') && limitText.includes('expmap compute'),
+    `the page shows the exact method's limit before a map (${limitText})`);
 
   // Two methods side by side on one camera.
   await page.goto(`${server.url}?point=${first.point.join(',')}&method=dgpc&fraction=0.05&compare=dgpc`);

@@ -1,8 +1,10 @@
 // The server side of `expmap view` without HTTP: requests are checked before
 // any work, a map from a point of a plane is the plane's exact map, every
 // method maps from points and unknown ones are refused by name,
-// precomputations happen once, and queries per method are capped. (test/viewer/browser_test.mjs drives the
-// server itself and the page in Chromium.)
+// precomputations happen once and report their steps, queries per method
+// are capped and a few more wait their turn, and patches beyond a method's
+// limit are refused. (test/viewer/browser_test.mjs drives the server itself
+// and the page in Chromium; test/viewer/soak/soak_test.py loads it.)
 #include "Map_service.h"
 #include "Viewer_json.h"
 
@@ -12,10 +14,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <map>
+#include <mutex>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace expmap_view;
@@ -233,12 +239,16 @@ BOOST_AUTO_TEST_CASE(every_method_maps_from_a_point) {
 
 BOOST_AUTO_TEST_CASE(precomputed_once_and_queries_capped) {
   const Mesh mesh = planar_grid();
-  Method_cache cache(mesh, 2, 2);
+  Cache_limits limits;
+  limits.queries_per_method = 2;
+  limits.waiting_per_method = 0;
+  limits.variants_kept = 2;
+  Method_cache cache(mesh, limits);
   const Method_info& dgpc = *find_method("dgpc");
   {
     const auto a = cache.acquire(dgpc, 0);
     const auto b = cache.acquire(dgpc, 0);
-    BOOST_TEST(throws_with<Busy>([&] { cache.acquire(dgpc, 0); }, "2 queries of dgpc are running"));
+    BOOST_TEST(throws_with<Busy>([&] { cache.acquire(dgpc, 0); }, "2 queries of dgpc are running and 0 wait"));
   }
   const auto c = cache.acquire(dgpc, 0);  // the leases above are returned
   const auto status = cache.status();
@@ -257,4 +267,167 @@ BOOST_AUTO_TEST_CASE(precomputed_once_and_queries_capped) {
   std::size_t heat_entries = 0;
   for (const auto& s : cache.status()) heat_entries += s.method == "heat";
   BOOST_TEST(heat_entries == 2u);
+}
+
+// The vertices within a radius of a point of a plane, as the limits count
+// them, are the grid points in that disk, counted one by one; counting
+// stops just above the cap.
+BOOST_AUTO_TEST_CASE(vertices_within_a_radius_are_counted) {
+  const Mesh mesh = planar_grid();
+  expmap::Surface_point_locator<Mesh> locator(mesh);
+  const std::array<double, 3> center{{0.0123, -0.0456, 0}};
+  const Point_on_surface p = locator.locate(center);
+  for (const double radius : {0.01, 0.1, 0.33, 0.7, 1.5, 3.0}) {
+    std::size_t inside = 0;
+    for (const auto v : mesh.vertices()) {
+      const auto& q = mesh.point(v);
+      inside += std::hypot(q.x() - center[0], q.y() - center[1]) <= radius;
+    }
+    BOOST_TEST_CONTEXT("radius " << radius) {
+      BOOST_TEST(expmap_cli::vertices_within(mesh, p.face, center, radius, 100000) == inside);
+      BOOST_TEST(expmap_cli::vertices_within(mesh, p.face, center, radius, 50) == std::min<std::size_t>(inside, 51));
+    }
+  }
+  BOOST_TEST(expmap_cli::estimated_patch_vertices(mesh, expmap::Patch::fraction(0.1), p.face, center, 10) ==
+             static_cast<std::size_t>(std::ceil(0.1 * mesh.number_of_vertices())));
+}
+
+// A patch beyond a method's limit is refused before any precomputation,
+// by a fraction or by a radius, with the limit and the way to the map
+// anyway; so is an exact map whose submesh is too large; a map within the
+// limits is answered.
+BOOST_AUTO_TEST_CASE(requests_beyond_a_methods_limit_are_too_large) {
+  // 90,601 vertices: a quarter of them is more than the exact limit.
+  Mesh mesh;
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(300, 300, 2.0, 2.0), mesh);
+  const double n = static_cast<double>(mesh.number_of_vertices());
+  BOOST_REQUIRE(0.25 * n > max_exact_patch_vertices);
+  Map_service service(mesh, {}, "grid.off");
+  const auto too_large = [&](Params p, const std::string& quantity, std::size_t maximum,
+                             const std::string& text) {
+    try {
+      service.compute(p);
+    } catch (const Too_large& e) {
+      BOOST_TEST_MESSAGE(e.what());
+      BOOST_TEST(e.method == "exact");
+      BOOST_TEST(e.quantity == quantity);
+      BOOST_TEST(e.maximum == maximum);
+      BOOST_TEST(e.asked > maximum);
+      return std::string(e.what()).find(text) != std::string::npos;
+    }
+    return false;
+  };
+  const std::string command = "compute the map with 'expmap compute grid.off --method exact --source-point "
+                              "0.01,0.02,0 --fraction ";
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.25"}}, "patch_vertices",
+                       max_exact_patch_vertices,
+                       "fraction 0.25 is 22,651 patch vertices; this server maps at most 20,000 patch "
+                       "vertices with exact: ask for a smaller patch (a fraction of at most 0.2207), or " +
+                           command + "0.25 -o map.csv'"));
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"radius", "2"}}, "patch_vertices",
+                       max_exact_patch_vertices,
+                       "radius 2 takes in more than 20,000 vertices (counted within that distance in space)"));
+  BOOST_TEST(service.cache().status().empty());  // nothing was precomputed for them
+  // 19,027 patch vertices, within that limit; their submesh has more than
+  // 40,000 faces (the graph distance that reaches them overshoots).
+  BOOST_TEST(too_large({{"point", "0.01,0.02,0"}, {"method", "exact"}, {"fraction", "0.21"}}, "region_faces",
+                       max_exact_region_faces,
+                       "this exact map's submesh (the faces within reach of its geodesics) has more than "
+                       "40,000 faces, the most this server maps (up to 1.1 GB; the surface may fold back "
+                       "within its reach): ask for a smaller patch, or " + command + "0.21 -o map.csv'"));
+
+  // Other methods map a quarter of it; a radius inside a disk of about
+  // 15,000 vertices (the grid's spacing is 2/300) passes the count.
+  const Map_response r = service.compute({{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"fraction", "0.25"}});
+  BOOST_TEST(r.map.size() == static_cast<std::size_t>(std::ceil(0.25 * n)));
+  const double radius = std::sqrt(15000 / 3.14159265) * 2.0 / 300;
+  const Map_response inside =
+      service.compute({{"point", "0.01,0.02,0"}, {"method", "dgpc"}, {"radius", std::to_string(radius)}});
+  BOOST_TEST(inside.map.size() < max_exact_patch_vertices);
+  BOOST_TEST(expmap_cli::vertices_within(mesh, inside.source.face, inside.position, radius,
+                                         max_exact_patch_vertices) <= max_exact_patch_vertices);
+}
+
+// With its queries all running, a request waits its turn behind those
+// before it, up to the queue's length and for at most the longest wait.
+BOOST_AUTO_TEST_CASE(waiting_requests_are_served_in_turn) {
+  const Mesh mesh = planar_grid();
+  Cache_limits limits;
+  limits.queries_per_method = 1;
+  limits.waiting_per_method = 2;
+  limits.max_wait_seconds = 20;
+  Method_cache cache(mesh, limits);
+  const Method_info& dem = *find_method("dem");
+  std::optional<Method_cache::Lease> held(cache.acquire(dem, 0));
+  std::mutex order_mutex;
+  std::vector<int> order;
+  const auto waits = [&](int id) {
+    return std::thread([&, id] {
+      const auto lease = cache.acquire(dem, 0);
+      std::lock_guard<std::mutex> lock(order_mutex);
+      order.push_back(id);
+    });
+  };
+  const auto queued = [&](unsigned count) {
+    for (int i = 0; i < 2000; ++i) {
+      const auto s = cache.status();
+      if (s.size() == 1 && s[0].waiting == count) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return false;
+  };
+  std::thread first = waits(1);
+  BOOST_TEST(queued(1));
+  std::thread second = waits(2);
+  BOOST_TEST(queued(2));
+  BOOST_TEST(throws_with<Busy>([&] { cache.acquire(dem, 0); }, "1 queries of dem are running and 2 wait"));
+  held.reset();
+  first.join();
+  second.join();
+  BOOST_TEST((order == std::vector<int>{1, 2}));
+
+  // A wait that lasts too long ends in Busy.
+  limits.max_wait_seconds = 0.2;
+  Method_cache impatient(mesh, limits);
+  const auto lease = impatient.acquire(dem, 0);
+  const auto start = std::chrono::steady_clock::now();
+  BOOST_TEST(throws_with<Busy>([&] { impatient.acquire(dem, 0); }, "waited 0.2 s for one of the 1 queries"));
+  BOOST_TEST(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() >= 0.2);
+  BOOST_TEST(impatient.status()[0].waiting == 0u);
+}
+
+// While the heat method is precomputed, its status names the step it is in
+// and the fraction done; a request for it meanwhile says the same.
+BOOST_AUTO_TEST_CASE(precomputation_progress_is_reported) {
+  Mesh mesh;
+  expmap_analytic::soup_to_mesh(expmap_analytic::make_grid(200, 200, 2.0, 2.0), mesh);
+  Method_cache cache(mesh, {});
+  const Method_info& heat = *find_method("heat");
+  std::thread precomputing([&] { cache.acquire(heat, 10); });
+  std::vector<std::string> steps;
+  std::vector<double> fractions;
+  std::string busy;
+  for (;;) {
+    const auto s = cache.status();
+    if (!s.empty() && s[0].state != Precomputation_status::State::running) break;
+    if (!s.empty() && !s[0].step.empty() && (steps.empty() || steps.back() != s[0].step)) {
+      steps.push_back(s[0].step);
+      fractions.push_back(s[0].fraction);
+      if (busy.empty()) {
+        try {
+          cache.acquire(heat, 10);
+        } catch (const Busy& e) {
+          busy = e.what();
+        }
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  precomputing.join();
+  BOOST_TEST_MESSAGE("steps seen: " << steps.size() << ", busy: " << busy);
+  BOOST_TEST(steps.size() >= 3u);
+  BOOST_TEST(std::is_sorted(fractions.begin(), fractions.end()));
+  BOOST_TEST(busy.find("heat (m = 10) is being precomputed: ") == 0u);
+  BOOST_TEST((cache.status()[0].state == Precomputation_status::State::ready));
+  BOOST_TEST(cache.status()[0].step == "done");
 }

@@ -5,9 +5,11 @@
 
 /// \file Method_cache.h
 /// The viewer's precomputed methods: each built once, on the first request
-/// that needs it, and shared by the requests after it; the number of
-/// queries running on each at once is capped, so that slow queries of one
-/// method (the exact one) cannot take every server thread from another.
+/// that needs it, and shared by the requests after it. The queries running
+/// on each at once are capped, so that slow queries of one method (the
+/// exact one) cannot take every server thread from another; a few more
+/// wait their turn in order, so that a script sending several requests at
+/// once is served rather than turned away.
 
 #include "Viewer_methods.h"
 
@@ -15,7 +17,10 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <cstdint>
 #include <cstdio>
+#include <deque>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -25,11 +30,14 @@
 
 namespace expmap_view {
 
-/// The server cannot take the request now (a precomputation or the query
-/// cap): HTTP 503, to be retried.
+/// The server cannot take the request now (a precomputation runs, or the
+/// method's queries and its queue are full): HTTP 503 with a Retry-After
+/// of `retry_after` seconds.
 class Busy : public std::runtime_error {
  public:
-  explicit Busy(const std::string& message) : std::runtime_error(message) {}
+  Busy(const std::string& message, int retry_after)
+      : std::runtime_error(message), retry_after(retry_after) {}
+  int retry_after;
 };
 
 /// A precomputation that failed: its message, and whether the mesh was to
@@ -41,13 +49,35 @@ class Precomputation_failed : public std::runtime_error {
   bool invalid_input;
 };
 
-/// What `Method_cache::status()` reports of one precomputation.
+/// How much the cache lets run, wait and stay.
+struct Cache_limits {
+  /// Queries that run on one method at once.
+  unsigned queries_per_method = 2;
+  /// Requests that wait, in order, for one of those; more get `Busy`.
+  unsigned waiting_per_method = 4;
+  /// How long one of them waits at most before it gets `Busy`.
+  double max_wait_seconds = 30;
+  /// Variants of one method (heat's time factors) kept at once; the least
+  /// recently used idle one makes room for a new one.
+  unsigned variants_kept = 3;
+  /// Fewer are kept where their `held_bytes()` and a new one's (as large as
+  /// the largest kept) would exceed this: heat's factors grow with the mesh
+  /// (a heat method holds 1.1 GB on 711k vertices, 4.4 GB on 2.85M, most of
+  /// it its factors), and on 2.85M vertices only one is kept.
+  std::size_t variant_bytes_kept = std::size_t(3) << 30;
+};
+
+/// What `Method_cache::status()` reports of one precomputed method.
 struct Precomputation_status {
   std::string method;
   double time_factor = 0;  ///< heat's m; 0 for the others
   enum class State { running, ready, failed } state = State::running;
   double seconds = 0;  ///< so far while running, in all once done
   std::string error;   ///< when failed
+  /// While running: the step it is in and the estimated fraction done.
+  std::string step;
+  double fraction = 0;
+  unsigned queries_running = 0, waiting = 0;  ///< once ready
 };
 
 class Method_cache {
@@ -67,6 +97,7 @@ class Method_cache {
       if (!m_entry) return;
       std::lock_guard<std::mutex> lock(*m_mutex);
       --m_entry->queries_running;
+      m_entry->turn.notify_all();
     }
     const Viewer_method& method() const { return *m_entry->method; }
 
@@ -76,17 +107,17 @@ class Method_cache {
   };
 
   /// \param mesh the mesh every method is built on; must outlive the cache.
-  /// \param queries_per_method queries that may run on one method at once.
-  /// \param time_factors_kept heat methods of different m kept at once (each
-  ///        holds its factors, the bulk of the server's memory); the least
-  ///        recently used idle one makes room for a new one.
-  Method_cache(const Mesh& mesh, unsigned queries_per_method, unsigned time_factors_kept)
-      : m_mesh(mesh), m_queries_per_method(queries_per_method), m_time_factors_kept(time_factors_kept) {}
+  Method_cache(const Mesh& mesh, const Cache_limits& limits) : m_mesh(mesh), m_limits(limits) {}
+
+  const Cache_limits& limits() const { return m_limits; }
 
   /// The method `info` (with heat's `time_factor`), leased for one query.
-  /// The first call for it precomputes it on the calling thread.
-  /// \throws Busy while another call precomputes it, or when
-  ///         `queries_per_method` queries already run on it.
+  /// The first call for it precomputes it on the calling thread. When
+  /// `queries_per_method` queries run on it, the call waits for one of them
+  /// behind the calls that came before it.
+  /// \throws Busy while another call precomputes it, when
+  ///         `waiting_per_method` calls wait already, or after waiting
+  ///         `max_wait_seconds`.
   /// \throws Precomputation_failed if its precomputation failed (then and
   ///         on every later call: it is not tried again).
   Lease acquire(const Method_info& info, double time_factor) {
@@ -99,12 +130,8 @@ class Method_cache {
         entry->last_use = ++m_clock;
         if (entry->state == Precomputation_status::State::failed)
           throw Precomputation_failed(entry->error, entry->invalid_input);
-        if (entry->state == Precomputation_status::State::running)
-          throw Busy(describe(*entry) + " is being precomputed (" +
-                     seconds_text(seconds_since(entry->started)) + " so far); retry");
-        if (entry->queries_running >= m_queries_per_method)
-          throw Busy(std::to_string(m_queries_per_method) + " queries of " + describe(*entry) +
-                     " are running; retry when one is done");
+        if (entry->state == Precomputation_status::State::running) throw precomputing(*entry);
+        wait_for_turn(*entry, lock);
         ++entry->queries_running;
         return Lease(entry, m_mutex);
       }
@@ -117,12 +144,18 @@ class Method_cache {
       m_entries.push_back(entry);
     }
     // The precomputation runs outside the lock: status() and other methods'
-    // queries go on meanwhile.
+    // queries go on meanwhile; its progress is kept for status().
     std::unique_ptr<Viewer_method> method;
     std::string error;
     bool invalid_input = false;
+    Entry* const progressing = entry.get();
+    const expmap::Precomputation_callback progress = [this, progressing](const char* step, double fraction) {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      progressing->step = step;
+      progressing->fraction = fraction;
+    };
     try {
-      method = info.make(m_mesh, time_factor);
+      method = info.make(m_mesh, time_factor, progress);
     } catch (const expmap::Invalid_input& e) {
       error = e.what();
       invalid_input = true;
@@ -137,6 +170,7 @@ class Method_cache {
       entry->invalid_input = invalid_input;
       throw Precomputation_failed(entry->error, invalid_input);
     }
+    entry->held_bytes = method->held_bytes();
     entry->method = std::move(method);
     entry->state = Precomputation_status::State::ready;
     ++entry->queries_running;
@@ -146,7 +180,7 @@ class Method_cache {
     return Lease(entry, m_mutex);
   }
 
-  /// Every precomputation started so far, in the order started.
+  /// Every precomputation started so far and kept, in the order started.
   std::vector<Precomputation_status> status() const {
     std::lock_guard<std::mutex> lock(m_mutex);
     std::vector<Precomputation_status> all;
@@ -158,6 +192,10 @@ class Method_cache {
       s.seconds = e->state == Precomputation_status::State::running ? seconds_since(e->started)
                                                                       : e->seconds;
       s.error = e->error;
+      s.step = e->step;
+      s.fraction = e->fraction;
+      s.queries_running = e->queries_running;
+      s.waiting = static_cast<unsigned>(e->queue.size());
       all.push_back(s);
     }
     return all;
@@ -170,12 +208,56 @@ class Method_cache {
     Precomputation_status::State state = Precomputation_status::State::running;
     std::chrono::steady_clock::time_point started;
     double seconds = 0;
+    std::string step;
+    double fraction = 0;
     std::unique_ptr<const Viewer_method> method;
+    std::size_t held_bytes = 0;
     std::string error;
     bool invalid_input = false;
     unsigned queries_running = 0;
+    std::deque<std::uint64_t> queue;  // the tickets of the calls waiting, in order
+    std::uint64_t next_ticket = 0;
+    std::condition_variable turn;  // a query ended, or the queue moved
     unsigned long long last_use = 0;
   };
+
+  // Returns once `e` has a free query slot and no earlier call waits for
+  // one; waits for that in e's queue (`lock` held on m_mutex).
+  void wait_for_turn(Entry& e, std::unique_lock<std::mutex>& lock) {
+    if (e.queries_running < m_limits.queries_per_method && e.queue.empty()) return;
+    if (e.queue.size() >= m_limits.waiting_per_method)
+      throw Busy(std::to_string(e.queries_running) + " queries of " + describe(e) + " are running and " +
+                     std::to_string(e.queue.size()) + " wait (as many as this server lets wait); retry",
+                 1);
+    const std::uint64_t ticket = e.next_ticket++;
+    e.queue.push_back(ticket);
+    const auto deadline = std::chrono::steady_clock::now() +
+                          std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                              std::chrono::duration<double>(m_limits.max_wait_seconds));
+    const bool turn = e.turn.wait_until(lock, deadline, [&] {
+      return e.queries_running < m_limits.queries_per_method && e.queue.front() == ticket;
+    });
+    e.queue.erase(std::find(e.queue.begin(), e.queue.end(), ticket));
+    e.turn.notify_all();  // the next in the queue may go, or move up
+    if (!turn)
+      throw Busy("waited " + seconds_text(m_limits.max_wait_seconds) + " for one of the " +
+                     std::to_string(m_limits.queries_per_method) + " queries of " + describe(e) +
+                     " to end; retry",
+                 1);
+  }
+
+  // Busy for a request that finds `e` being precomputed: what it waits for,
+  // and a retry after about the time left (from the fraction done so far).
+  static Busy precomputing(const Entry& e) {
+    const double seconds = seconds_since(e.started);
+    const double left = e.fraction > 0.05 ? seconds * (1 - e.fraction) / e.fraction : 2.0;
+    const int retry = static_cast<int>(std::clamp(left, 1.0, 30.0) + 0.5);
+    std::string doing = e.step.empty() ? std::string() : ": " + e.step;
+    if (e.fraction > 0) doing += ", about " + std::to_string(static_cast<int>(100 * e.fraction)) + "% done";
+    return Busy(describe(e) + " is being precomputed" + doing + " (" + seconds_text(seconds) +
+                    " so far); retry",
+                retry);
+  }
 
   static double seconds_since(std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -199,27 +281,31 @@ class Method_cache {
   }
 
   // Before a new precomputation of `name`: drops the least recently used
-  // idle ready or failed variant while `time_factors_kept` are held. Leases
+  // idle ready or failed variant while `variants_kept` are held, or while
+  // their bytes and a new one's would exceed `variant_bytes_kept`. Leases
   // keep their entry alive, so only idle ones go.
   void make_room(const std::string& name) {
     for (;;) {
-      std::size_t held = 0;
+      std::size_t held = 0, bytes = 0, largest = 0;
       std::shared_ptr<Entry> oldest;
       for (const auto& e : m_entries) {
         if (e->method_name != name) continue;
         ++held;
-        const bool idle = e->state != Precomputation_status::State::running && e->queries_running == 0;
+        bytes += e->held_bytes;
+        largest = std::max(largest, e->held_bytes);
+        const bool idle = e->state != Precomputation_status::State::running &&
+                          e->queries_running == 0 && e->queue.empty();
         if (idle && (!oldest || e->last_use < oldest->last_use)) oldest = e;
       }
-      if (held < m_time_factors_kept) return;
+      if (held < m_limits.variants_kept && bytes + largest <= m_limits.variant_bytes_kept) return;
       if (!oldest)
-        throw Busy("every kept " + name + " method is in use; retry when a query is done");
+        throw Busy("every kept " + name + " method is in use; retry when a query is done", 1);
       m_entries.erase(std::find(m_entries.begin(), m_entries.end(), oldest));
     }
   }
 
   const Mesh& m_mesh;
-  const unsigned m_queries_per_method, m_time_factors_kept;
+  const Cache_limits m_limits;
   mutable std::mutex m_mutex;
   std::vector<std::shared_ptr<Entry>> m_entries;
   unsigned long long m_clock = 0;

@@ -137,6 +137,17 @@ inline std::string error_json(const std::string& message) {
   return j.text();
 }
 
+/// `{"error": message, "limit": {...}}` for a request too large: the
+/// method, the `quantity` limited ("patch_vertices" or "region_faces"), its
+/// `maximum` and what was `asked` (counted up to `maximum` + 1).
+inline std::string too_large_json(const Too_large& e) {
+  Json j;
+  j.raw("{").key("error").string(e.what());
+  j.key("limit").raw("{").key("method").string(e.method).key("quantity").string(e.quantity);
+  j.key("maximum").integer(e.maximum).key("asked").integer(e.asked).raw("}}");
+  return j.text();
+}
+
 /// The mesh for drawing: vertex coordinates x0,y0,z0,x1,... and the
 /// corners of each face i0,j0,k0,i1,..., flat.
 inline std::string mesh_json(const Mesh& mesh) {
@@ -193,27 +204,44 @@ inline std::string map_json(const Map_response& r) {
   return j.text();
 }
 
-/// The methods (and which take heat's time factor), the request limits, and
-/// every precomputation so far with its state: the page polls it to show
-/// progress.
+/// The methods (which take heat's time factor, the largest patch each
+/// maps, for exact the largest submesh and the memory its map may take),
+/// the mesh's size, the request limits, and every precomputation kept
+/// with its state, its step while running and its queries once ready: the
+/// page polls it to show progress.
 inline std::string status_json(const Map_service& service) {
   Json j;
   j.raw("{").key("methods").array(viewer_methods(), [](Json& o, const Method_info& m) {
     o.raw("{").key("name").string(m.name).key("label").string(m.label);
     o.key("takes_time_factor").boolean(m.takes_time_factor);
     if (m.takes_time_factor) o.key("default_m").number(default_time_factor());
+    o.key("max_patch_vertices").integer(m.max_patch_vertices);
+    if (m.max_region_faces) {
+      o.key("max_region_faces").integer(m.max_region_faces);
+      o.key("max_map_mib").number(
+          std::round(expmap_cli::exact_query_mib(static_cast<double>(m.max_region_faces))));
+    }
     o.raw("}");
   });
+  j.key("mesh").raw("{").key("vertex_count").integer(service.mesh().number_of_vertices());
+  j.key("face_count").integer(service.mesh().number_of_faces()).raw("}");
   const Request_limits& l = service.limits();
+  const Cache_limits& c = service.cache().limits();
   j.key("limits").raw("{").key("max_fraction").number(l.max_fraction);
   j.key("max_radius").number(l.max_radius).key("min_m").number(l.min_time_factor);
-  j.key("max_m").number(l.max_time_factor).raw("}");
+  j.key("max_m").number(l.max_time_factor);
+  j.key("queries_per_method").integer(c.queries_per_method);
+  j.key("waiting_per_method").integer(c.waiting_per_method);
+  j.key("max_wait_seconds").number(c.max_wait_seconds).raw("}");
   j.key("precomputations").array(service.cache().status(), [](Json& o, const Precomputation_status& s) {
     using State = Precomputation_status::State;
     o.raw("{").key("method").string(s.method);
     if (s.time_factor > 0) o.key("m").number(s.time_factor);
     o.key("state").string(s.state == State::running ? "running" : s.state == State::ready ? "ready" : "failed");
     o.key("seconds").number(s.seconds);
+    if (s.state == State::running) o.key("step").string(s.step).key("fraction").number(s.fraction);
+    if (s.state == State::ready)
+      o.key("queries_running").integer(s.queries_running).key("waiting").integer(s.waiting);
     if (s.state == State::failed) o.key("error").string(s.error);
     o.raw("}");
   });

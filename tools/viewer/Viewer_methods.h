@@ -13,12 +13,15 @@
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
+#include <expmap/Precomputation_progress.h>
 #include <expmap/Surface_point.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <cstddef>
 #include <memory>
+#include <type_traits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +38,15 @@ class Viewer_method {
   virtual ~Viewer_method() = default;
   /// The map around `source` (its fold-free radius filled).
   virtual Map compute(const Point_on_surface& source, const expmap::Patch& patch) const = 0;
+  /// The bytes of what it keeps that grow fastest with the mesh (heat's
+  /// factors), for deciding how many variants to keep; 0 for the others.
+  virtual std::size_t held_bytes() const { return 0; }
+  /// The exact method's `region_faces()` for this query, counted up to
+  /// `at_most` + 1, what its memory grows with; 0 for the other methods.
+  virtual std::size_t region_faces(const Point_on_surface&, const expmap::Patch&,
+                                   std::size_t /*at_most*/) const {
+    return 0;
+  }
 };
 
 /// `Viewer_method` for a method class of the library.
@@ -50,6 +62,17 @@ class Viewer_method_model final : public Viewer_method {
     const typename Method::Query query(shared);
     return m_method.compute(source, patch, query);
   }
+  std::size_t held_bytes() const override {
+    if constexpr (std::is_same_v<Method, expmap::Heat_exponential_map<Mesh>>)
+      return m_method.factor_bytes();
+    return 0;
+  }
+  std::size_t region_faces(const Point_on_surface& source, const expmap::Patch& patch,
+                           std::size_t at_most) const override {
+    if constexpr (std::is_same_v<Method, expmap::Exact_exponential_map<Mesh>>)
+      return m_method.region_faces(source, patch, at_most);
+    return 0;
+  }
 
  private:
   Method m_method;
@@ -60,34 +83,65 @@ struct Method_info {
   const char* name;   ///< as in the URL and the API: heat, dem, dgpc, exact
   const char* label;  ///< for the page
   bool takes_time_factor;  ///< heat's m
-  /// Precomputes the method on `mesh` (which must outlive it); `time_factor`
-  /// is used only where `takes_time_factor`.
-  std::unique_ptr<Viewer_method> (*make)(const Mesh& mesh, double time_factor);
+  /// The most patch vertices one request may ask for (doc/viewer.md).
+  std::size_t max_patch_vertices;
+  /// The most faces of the exact method's submesh (`region_faces()`); 0:
+  /// no such limit.
+  std::size_t max_region_faces;
+  /// Precomputes the method on `mesh` (which must outlive it), reporting
+  /// its steps to `progress`; `time_factor` is used only where
+  /// `takes_time_factor`.
+  std::unique_ptr<Viewer_method> (*make)(const Mesh& mesh, double time_factor,
+                                         const expmap::Precomputation_callback& progress);
 };
 
+/// The most patch vertices of a map of DEM, DGPC or heat: their queries
+/// take a few hundred milliseconds there, and the answer is about 25 MB of
+/// JSON for the page to read.
+constexpr std::size_t max_fast_patch_vertices = 250000;
+/// The most faces of an exact map's submesh: up to 1.1 GB each by
+/// `expmap_cli::exact_query_mib()`, so that the two that may run at once
+/// stay within 2.2 GB. Such a submesh holds the geodesics of 10,000 to
+/// 18,000 patch vertices, fewer where the surface folds back within reach.
+constexpr std::size_t max_exact_region_faces = 40000;
+/// The most patch vertices of an exact map: a submesh of
+/// `max_exact_region_faces` faces holds about half as many vertices, the
+/// patch's and more (2.2 to 4 faces per patch vertex measured), so a request
+/// beyond is refused before the graph search that counts its submesh.
+constexpr std::size_t max_exact_patch_vertices = 20000;
+
 namespace internal {
+// DEM, DGPC and the exact method copy the mesh into their arrays, one step.
 template <class Method>
-std::unique_ptr<Viewer_method> make_method(const Mesh& mesh, double) {
-  return std::make_unique<Viewer_method_model<Method>>(mesh);
+std::unique_ptr<Viewer_method> make_method(const Mesh& mesh, double,
+                                           const expmap::Precomputation_callback& progress) {
+  if (progress) progress("copying the mesh into the method's arrays", 0);
+  auto method = std::make_unique<Viewer_method_model<Method>>(mesh);
+  if (progress) progress("done", 1);
+  return method;
 }
-inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_factor) {
+inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_factor,
+                                                const expmap::Precomputation_callback& progress) {
   expmap::Heat_options options;
   options.time_factor = time_factor;
+  options.progress = progress;
   return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
 }
 template <class Method>
-constexpr Method_info row(const char* name, const char* label) {
-  return {name, label, false, make_method<Method>};
+constexpr Method_info row(const char* name, const char* label, std::size_t max_patch_vertices,
+                          std::size_t max_region_faces = 0) {
+  return {name, label, false, max_patch_vertices, max_region_faces, make_method<Method>};
 }
 }  // namespace internal
 
 /// The methods, in the order the page lists them.
 inline const std::vector<Method_info>& viewer_methods() {
   static const std::vector<Method_info> table{
-      {"heat", "heat method", true, internal::make_heat},
-      internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM"),
-      internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC"),
-      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact"),
+      {"heat", "heat method", true, max_fast_patch_vertices, 0, internal::make_heat},
+      internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM", max_fast_patch_vertices),
+      internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC", max_fast_patch_vertices),
+      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact", max_exact_patch_vertices,
+                                                         max_exact_region_faces),
   };
   return table;
 }

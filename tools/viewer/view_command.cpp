@@ -11,6 +11,7 @@
 
 #include "../Command_line.h"
 #include "Map_service.h"
+#include "Memory_release.h"
 #include "Viewer_json.h"
 
 #include <expmap/Errors.h>
@@ -141,13 +142,22 @@ void send(httplib::Response& res, int status, const std::shared_ptr<const Body>&
                            });
 }
 
-void send_json(httplib::Response& res, int status, std::string json) {
+// Sends `json`; with `release`, gives the memory it and its map leave free
+// back to the system once it is sent (Memory_release.h).
+void send_json(httplib::Response& res, int status, std::string json, bool release = false) {
   res.status = status;
   auto body = std::make_shared<const std::string>(std::move(json));
-  res.set_content_provider(body->size(), "application/json",
-                           [body](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
-                             return sink.write(body->data() + offset, length);
-                           });
+  const std::string* bytes = body.get();
+  // The releaser owns the body, so that it is freed before the trim.
+  res.set_content_provider(
+      body->size(), "application/json",
+      [bytes](std::size_t offset, std::size_t length, httplib::DataSink& sink) {
+        return sink.write(bytes->data() + offset, length);
+      },
+      [body, release](bool) mutable {
+        body.reset();
+        if (release) release_free_memory();
+      });
 }
 
 std::string mime_type(const fs::path& path) {
@@ -190,11 +200,15 @@ std::map<std::string, std::shared_ptr<const Body>> read_page(const fs::path& fol
   return files;
 }
 
-// Answers `compute()`'s exceptions with the status they stand for.
+// Answers `compute()`'s exceptions with the status they stand for;
+// `compute()` returns the JSON, and whether to release memory after it.
 template <class Compute>
 void answer(httplib::Response& res, Compute compute) {
   try {
-    send_json(res, 200, compute());
+    std::pair<std::string, bool> json = compute();
+    send_json(res, 200, std::move(json.first), json.second);
+  } catch (const Too_large& e) {
+    send_json(res, 413, too_large_json(e));
   } catch (const Bad_request& e) {
     send_json(res, 400, error_json(e.what()));
   } catch (const expmap::Invalid_input& e) {
@@ -202,7 +216,7 @@ void answer(httplib::Response& res, Compute compute) {
   } catch (const Precomputation_failed& e) {
     send_json(res, e.invalid_input ? 400 : 422, error_json(e.what()));
   } catch (const Busy& e) {
-    res.set_header("Retry-After", "1");
+    res.set_header("Retry-After", std::to_string(e.retry_after));
     send_json(res, 503, error_json(e.what()));
   } catch (const expmap::Computation_error& e) {
     send_json(res, 422, error_json(e.what()));
@@ -225,6 +239,7 @@ std::string url_host(const std::string& host) {
 }  // namespace
 
 std::string view_help() {
+  const Cache_limits limits;
   return "usage: expmap view MESH [--port P] [--host H]\n"
          "\n"
          "Serves an interactive view of local exponential maps on MESH in the web\n"
@@ -240,7 +255,15 @@ std::string view_help() {
          "\n"
          "API (JSON): GET /api/mesh, GET /api/status, and\n"
          "GET /api/map?point=X,Y,Z&method=M&fraction=F (or radius=R; m=T for heat).\n"
-         "Bad parameters get HTTP 400 with {\"error\": \"...\"}. See doc/manual.md.\n";
+         "Bad parameters get HTTP 400 with {\"error\": \"...\"}, a patch larger than the\n"
+         "method's limit HTTP 413 (exact: " + std::to_string(max_exact_patch_vertices) +
+         " vertices and " + std::to_string(max_exact_region_faces) + " faces of its submesh;\n"
+         "others: " + std::to_string(max_fast_patch_vertices) + " vertices).\n" +
+         std::to_string(limits.queries_per_method) + " queries run on a method at once and " +
+         std::to_string(limits.waiting_per_method) + " more wait their turn (at most " +
+         std::to_string(static_cast<int>(limits.max_wait_seconds)) + " s); beyond\n"
+         "that, and while a method is precomputed, HTTP 503 with Retry-After.\n"
+         "See doc/viewer.md.\n";
 }
 
 int run_view_command(const std::vector<std::string>& args) {
@@ -271,13 +294,17 @@ int run_view_command(const std::vector<std::string>& args) {
   if (!CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() == 0)
     return fail("'" + a.mesh + "' has no triangle faces to show");
 
-  Map_service service(mesh);
+  const Cache_limits cache_limits;
+  Map_service service(mesh, cache_limits, a.mesh);
   const auto mesh_body = std::make_shared<const Body>(make_body(mesh_json(mesh), "application/json"));
 
   httplib::Server server;
-  // Eight threads: two queries per method (the cache's cap) for two methods
-  // side by side, and the rest for the page's files and status polls.
-  server.new_task_queue = [] { return new httplib::ThreadPool(8); };
+  // A thread for each query that may run or wait on each method, and eight
+  // for the page's files, status polls and requests refused at once: a
+  // connection holds its thread while it is kept alive.
+  const std::size_t threads =
+      viewer_methods().size() * (cache_limits.queries_per_method + cache_limits.waiting_per_method) + 8;
+  server.new_task_queue = [threads] { return new httplib::ThreadPool(threads); };
   server.set_payload_max_length(4096);  // only GET requests are served
   server.set_read_timeout(10);
   server.set_keep_alive_max_count(1000);
@@ -306,10 +333,13 @@ int run_view_command(const std::vector<std::string>& args) {
     send(res, 200, mesh_body, req);
   });
   server.Get("/api/status", [&](const httplib::Request&, httplib::Response& res) {
-    answer(res, [&] { return status_json(service); });
+    answer(res, [&] { return std::make_pair(status_json(service), false); });
   });
   server.Get("/api/map", [&](const httplib::Request& req, httplib::Response& res) {
-    answer(res, [&] { return map_json(service.compute(req.params)); });
+    answer(res, [&] {
+      const Map_response r = service.compute(req.params);
+      return std::make_pair(map_json(r), leaves_much_free(r));
+    });
   });
   server.Get(R"(/.*)", [&](const httplib::Request& req, httplib::Response& res) {
     const auto it = page.find(req.path == "/" ? std::string("/index.html") : req.path);

@@ -30,10 +30,11 @@ namespace ball_detail {
 
 // Grows the selection from the faces [first, last) (already marked in
 // `face_marks` and queued), adding each face that shares a vertex with a
-// selected one and lies within `radius` of `center`.
+// selected one and lies within `radius` of `center`; stops once it holds
+// more than `max_faces`.
 inline void grow(const Mesh_arrays& m, const Vector3& center, double radius,
                  Vertex_marks& face_marks, Vertex_marks& vertex_marks,
-                 std::vector<int>& face_queue, Ball_submesh& out) {
+                 std::vector<int>& face_queue, Ball_submesh& out, std::size_t max_faces) {
   using K = CGAL::Simple_cartesian<double>;
   auto point = [&](int v) { return K::Point_3(m.point[v][0], m.point[v][1], m.point[v][2]); };
   const K::Point_3 s(center[0], center[1], center[2]);
@@ -46,7 +47,7 @@ inline void grow(const Mesh_arrays& m, const Vector3& center, double radius,
     }
     return static_cast<std::size_t>(vertex_marks.value(v));
   };
-  for (std::size_t head = 0; head < face_queue.size(); ++head) {
+  for (std::size_t head = 0; head < face_queue.size() && out.face.size() <= max_faces; ++head) {
     const auto& f = m.face[face_queue[head]];
     out.face.push_back({{local(f[0]), local(f[1]), local(f[2])}});
     for (int v : f)
@@ -84,10 +85,12 @@ inline void clear(Vertex_marks& face_marks, Vertex_marks& vertex_marks,
 /// most `radius`, and are larger elsewhere. Every vertex within the ball
 /// keeps its whole star. Touches only the selected faces and their
 /// neighbours; `face_marks` and `vertex_marks` are sized for the mesh's
-/// faces and vertices and reused across queries.
+/// faces and vertices and reused across queries. With `max_faces` it stops
+/// once it holds more faces than that (to count them up to a limit).
 inline void extract_ball_submesh(const Mesh_arrays& m, int source, double radius,
                                  Vertex_marks& face_marks, Vertex_marks& vertex_marks,
-                                 std::vector<int>& face_queue, Ball_submesh& out) {
+                                 std::vector<int>& face_queue, Ball_submesh& out,
+                                 std::size_t max_faces = static_cast<std::size_t>(-1)) {
   ball_detail::clear(face_marks, vertex_marks, face_queue, out);
   vertex_marks.mark(source, 0);
   out.point.push_back(m.point[source]);
@@ -97,7 +100,8 @@ inline void extract_ball_submesh(const Mesh_arrays& m, int source, double radius
     face_marks.mark(m.vertex_face[p], 0);
     face_queue.push_back(m.vertex_face[p]);
   }
-  ball_detail::grow(m, m.point[source], radius, face_marks, vertex_marks, face_queue, out);
+  ball_detail::grow(m, m.point[source], radius, face_marks, vertex_marks, face_queue, out,
+                    max_faces);
 }
 
 /// The same for a source at the point `center` of the face `face` (stored
@@ -107,11 +111,12 @@ inline void extract_ball_submesh(const Mesh_arrays& m, int source, double radius
 inline void extract_ball_submesh_around_point(const Mesh_arrays& m, int face, const Vector3& center,
                                               double radius, Vertex_marks& face_marks,
                                               Vertex_marks& vertex_marks,
-                                              std::vector<int>& face_queue, Ball_submesh& out) {
+                                              std::vector<int>& face_queue, Ball_submesh& out,
+                                              std::size_t max_faces = static_cast<std::size_t>(-1)) {
   ball_detail::clear(face_marks, vertex_marks, face_queue, out);
   face_marks.mark(face, 0);
   face_queue.push_back(face);
-  ball_detail::grow(m, center, radius, face_marks, vertex_marks, face_queue, out);
+  ball_detail::grow(m, center, radius, face_marks, vertex_marks, face_queue, out, max_faces);
   out.source = 0;
 }
 

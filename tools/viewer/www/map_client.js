@@ -3,9 +3,12 @@
 // queues up stale maps.
 
 export class MapClient {
-  constructor(onMap, onError) {
+  // onWaiting(message): the server asked to retry (HTTP 503), saying what
+  // it waits for (a precomputation and its step, or other queries).
+  constructor(onMap, onError, onWaiting = () => {}) {
     this.onMap = onMap;
     this.onError = onError;
+    this.onWaiting = onWaiting;
     this.pending = null;
     this.inFlight = false;
   }
@@ -25,8 +28,11 @@ export class MapClient {
       const response = await fetch('api/map' + query);
       const body = await response.json();
       if (response.status === 503) {
-        // Precomputing, or the server's queries of this method are all
-        // taken: ask again shortly, unless a newer request came meanwhile.
+        // Precomputing, or the server's queries of this method and its
+        // queue are all taken: ask again shortly (sooner than Retry-After,
+        // which is for scripts: the page polls the progress meanwhile),
+        // unless a newer request came meanwhile.
+        this.onWaiting(body.error || 'the server is busy');
         if (!this.pending) this.pending = query;
         await new Promise((resolve) => setTimeout(resolve, 250));
       } else if (!response.ok) {

@@ -18,6 +18,11 @@ async function getJson(url) {
 }
 
 function format(x, digits = 3) { return Number(x).toPrecision(digits); }
+function grouped(k) { return Number(k).toLocaleString('en-US'); }
+function bytes(mib) {
+  const b = mib * 1024 * 1024;
+  return b < 1e9 ? `${(b / 1e6).toFixed(0)} MB` : `${(b / 1e9).toFixed(1)} GB`;
+}
 function ms(x) { return x < 10 ? x.toFixed(2) : x.toFixed(0); }
 
 // Whether WebGL draws on the processor (SwiftShader, llvmpipe: headless
@@ -32,8 +37,31 @@ function softwareRendering() {
   return /swiftshader|llvmpipe|software/i.test(name);
 }
 
+// The mesh, read as it arrives: a mesh of millions of vertices is a
+// hundred MB of JSON, so the status line says how far the reading is.
+async function loadMesh(counts) {
+  const response = await fetch('api/mesh');
+  if (!response.ok) throw new Error(`the mesh: HTTP ${response.status}`);
+  const reader = response.body.getReader();
+  const chunks = [];
+  let received = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    chunks.push(value);
+    received += value.length;
+    $('status').textContent = `loading the mesh (${grouped(counts.vertex_count)} vertices, ` +
+      `${grouped(counts.face_count)} faces): ${(received / 1e6).toFixed(1)} MB so far`;
+  }
+  $('status').textContent = 'reading the mesh';
+  const text = await new Blob(chunks).text();
+  $('status').textContent = '';
+  return JSON.parse(text);
+}
+
 async function main() {
-  const [status, mesh] = await Promise.all([getJson('api/status'), getJson('api/mesh')]);
+  const status = await getJson('api/status');
+  const mesh = await loadMesh(status.mesh);
   const methods = status.methods;
   const heat = methods.find((m) => m.takes_time_factor);
   // DGPC first: it factors no matrix, so the first map comes at once.
@@ -80,10 +108,22 @@ async function main() {
     $('info-1').style.display = comparing() ? 'block' : 'none';
   };
 
+  // The largest map a method gives here, shown before it is asked for
+  // where it is small enough to matter (the exact method's).
+  const limitLine = (name) => {
+    const m = methods.find((x) => x.name === name);
+    if (!m || !m.max_region_faces) return '';
+    const fraction = m.max_patch_vertices / mesh.vertex_count;
+    return `maps of up to ${grouped(m.max_region_faces)} submesh faces here (up to ${bytes(m.max_map_mib)}),\n` +
+      `at most ${grouped(m.max_patch_vertices)} patch vertices` +
+      (fraction < status.limits.max_fraction ? ` (fraction ≤ ${format(Math.floor(fraction * 1e4) / 1e4)})` : '') +
+      '; larger: expmap compute';
+  };
   const info = (k, lines, error) => {
     $(`info-${k}`).innerHTML = '';
     const label = methods.find((m) => m.name === methodOf(k))?.label || methodOf(k);
-    $(`info-${k}`).append(label + (lines ? '\n' + lines : ''));
+    const limit = limitLine(methodOf(k));
+    $(`info-${k}`).append(label + (limit ? '\n' + limit : '') + (lines ? '\n' + lines : ''));
     if (error) {
       const e = document.createElement('div');
       e.className = 'error';
@@ -102,7 +142,8 @@ async function main() {
       (map.flipped ? `, ${map.flipped} flipped (red)` : ', none flipped') + '\n' +
       `query ${ms(map.query_ms)} ms, round trip ${ms(roundTrip)} ms` +
       (rate ? `\n${rate.toFixed(1)} maps/s` : ''));
-  }, (error) => { panes[k].clear(); requestDraw(); info(k, '', error); }));
+  }, (error) => { panes[k].clear(); requestDraw(); info(k, '', error); },
+  (message) => info(k, 'waiting: ' + message.replace(/; retry.*$/, ''))));
 
   const query = (k) => {
     const q = { ...state, method: methodOf(k), compare: '' };
@@ -116,13 +157,29 @@ async function main() {
       for (const k of [0, 1]) info(k, 'click the surface to place the source');
       return;
     }
-    clients[0].request(query(0));
-    if (comparing()) clients[1].request(query(1));
+    // A view without a map yet says so (the status line below says what
+    // the server is busy with, a precomputation on a large mesh).
+    for (const k of comparing() ? [0, 1] : [0]) {
+      if (!panes[k].lastMap) info(k, 'waiting for the map');
+      clients[k].request(query(k));
+    }
   };
 
   const patchChanged = () => { panes.forEach((p) => p.resetScale()); update(); };
-  $('method').onchange = (e) => { state.method = e.target.value; update(); };
-  $('compare').onchange = (e) => { state.compare = e.target.value; panes[1].clear(); resize(); update(); };
+  // A new method's box says what it is (and its limit) at once, before its
+  // first map, which may take a while (a precomputation, an exact map).
+  $('method').onchange = (e) => {
+    state.method = e.target.value;
+    if (state.point) info(0, 'waiting for the map');
+    update();
+  };
+  $('compare').onchange = (e) => {
+    state.compare = e.target.value;
+    panes[1].clear();
+    resize();
+    if (state.point && state.compare) info(1, 'waiting for the map');
+    update();
+  };
   $('patch-kind').onchange = (e) => {
     const size = Number($('patch-size').value);
     if (e.target.value === 'radius') { state.radius = size > 0 && size <= radius ? size : radius / 10; state.fraction = null; }
@@ -199,7 +256,9 @@ async function main() {
     const s = await getJson('api/status').catch(() => null);
     const running = s ? s.precomputations.filter((p) => p.state === 'running') : [];
     $('status').textContent = running.map((p) =>
-      `precomputing ${p.method}${p.m ? ` (m = ${p.m})` : ''}: ${p.seconds.toFixed(1)} s so far`).join(' · ');
+      `precomputing ${p.method}${p.m ? ` (m = ${p.m})` : ''}: ${p.step || 'starting'}` +
+      `${p.fraction > 0 ? `, about ${Math.floor(100 * p.fraction)}% done` : ''}, ` +
+      `${p.seconds.toFixed(1)} s so far`).join(' · ');
     setTimeout(pollStatus, running.length ? 300 : 1500);
   };
   pollStatus();
