@@ -179,8 +179,15 @@ BOOST_AUTO_TEST_CASE(heat_underflow_is_reported_not_returned_as_nan) {
   expmap::Heat_options options;
   options.time_factor = 1e-3;  // heat decays like exp(-d / sqrt(t)): far too fast here
   expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options);
+  expmap::Heat_query_options heat_only;
+  heat_only.fallback = expmap::Heat_fallback::none;
   check_message<expmap::Computation_error>(
-      [&] { heat.compute_by_index(0, expmap::Patch::fraction(1.0)); }, "underflow");
+      [&] { heat.compute_by_index(0, expmap::Patch::fraction(1.0), heat_only); }, "underflow");
+  // By default the geodesic front maps the source instead.
+  const auto map = heat.compute_by_index(0, expmap::Patch::fraction(1.0));
+  BOOST_TEST(map.statistics.front_maps == 1u);
+  BOOST_TEST(map.size() == heat.number_of_vertices());
+  check_finite(map);
 }
 
 BOOST_AUTO_TEST_CASE(distance_not_minimal_at_the_source_is_reported) {
@@ -193,8 +200,12 @@ BOOST_AUTO_TEST_CASE(distance_not_minimal_at_the_source_is_reported) {
   options.time_factor = 1;
   options.laplacian = expmap::Laplacian_mode::direct;
   expmap::Heat_exponential_map<Surface_mesh> direct(mesh, options);
+  expmap::Heat_query_options heat_only;  // the heat's own map; by default the front's
+  heat_only.fallback = expmap::Heat_fallback::none;
   check_message<expmap::Computation_error>(
-      [&] { direct.compute_by_index(896, expmap::Patch::fraction(0.05)); }, "intrinsic_delaunay");
+      [&] { direct.compute_by_index(896, expmap::Patch::fraction(0.05), heat_only); },
+      "intrinsic_delaunay");
+  check_finite(direct.compute_by_index(896, expmap::Patch::fraction(0.05)));
   options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
   expmap::Heat_exponential_map<Surface_mesh> intrinsic(mesh, options);
   const auto map = intrinsic.compute_by_index(896, expmap::Patch::fraction(0.05));
@@ -206,7 +217,7 @@ BOOST_AUTO_TEST_CASE(distance_not_minimal_at_the_source_is_reported) {
   expmap::IO::read_triangle_mesh(data_mesh("ALSTOM_TEST4.off"), strips);  // as the CLI reads it
   const expmap::Heat_exponential_map<Surface_mesh> by_default(strips);
   check_message<expmap::Computation_error>(
-      [&] { by_default.compute_by_index(675, expmap::Patch::fraction(0.05)); },
+      [&] { by_default.compute_by_index(675, expmap::Patch::fraction(0.05), heat_only); },
       "boundary edges");
   std::size_t zeros = 0;
   for (double r : map.distance) zeros += r == 0.0;
