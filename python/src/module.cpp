@@ -661,12 +661,15 @@ PYBIND11_MODULE(_expmap, m) {
             d["factor_entries"] = a.statistics.factor_entries;
             d["solve_seconds"] = a.statistics.solve_seconds;
             d["region_retries"] = a.statistics.region_retries;
+            d["front_checks"] = a.statistics.front_checks;
+            d["front_maps"] = a.statistics.front_maps;
             return d;
           },
           "The heat query's work (zeros for the other methods): elimination-tree nodes\n"
           "visited by forward and back substitution, factor entries read, seconds in\n"
-          "the solves, and how often the region was doubled because the patch came\n"
-          "too close to its edge (region_retries).")
+          "the solves, how often the region was doubled because the patch came\n"
+          "too close to its edge (region_retries), and whether the geodesic front's\n"
+          "map was computed (front_checks) and returned (front_maps; see fallback).")
       .def("__len__", [](const Map_arrays& a) { return a.vertices.size(); })
       .def("__repr__", [](const Map_arrays& a) {
         return "<LocalMap source " + std::to_string(a.source) + ", " +

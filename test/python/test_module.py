@@ -153,6 +153,35 @@ def test_every_enum_member_is_accepted_by_name_and_value(cactus):
             np.testing.assert_array_equal(by_name.uv, by_value.uv)
 
 
+def flipped_triangles(local, F):
+    """Triangles of F with all corners in the map whose (u, v) turns over."""
+    position = {v: i for i, v in enumerate(local.vertices)}
+    count = 0
+    for face in F:
+        if all(v in position for v in face):
+            a, b, c = (local.uv[position[v]] for v in face)
+            count += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) <= 0
+    return count
+
+
+def test_the_geodesic_front_replaces_a_folding_heat_map(elephant):
+    # Vertex 841, at the tip of a tusk: the heat's reading at the source
+    # folds a region over; the default returns the front's map, which folds
+    # fewer triangles, and fallback="none" the heat's own.
+    _, V, F = elephant
+    heat = expmap.HeatExponentialMap(V, F)
+    default = heat.compute(841, fraction=0.05)
+    paper = heat.compute(841, fraction=0.05, fallback="none")
+    assert default.statistics["front_maps"] == 1 and paper.statistics["front_maps"] == 0
+    assert flipped_triangles(default, F) < flipped_triangles(paper, F)
+    assert heat.compute(841, fraction=0.05, fallback=expmap.HeatFallback.none).statistics[
+        "front_checks"] == 0
+    # Where the heat's map is sound it is returned untouched.
+    sound = heat.compute(527, fraction=0.05)
+    assert sound.statistics["front_maps"] == 0
+    np.testing.assert_array_equal(sound.uv, heat.compute(527, fraction=0.05, fallback="none").uv)
+
+
 def test_single_precision_factors_move_distances_by_float_round_off(elephant):
     _, V, F = elephant
     double = expmap.HeatExponentialMap(V, F).compute(0, fraction=0.05)
@@ -249,7 +278,8 @@ def test_bad_options_raise_value_error(cactus):
     heat = expmap.HeatExponentialMap(V, F)
     for settings in ({"region_growth": 0.5}, {"region_growth": "2"}, {"pruning_tolerance": -1.0},
                      {"angle_estimator": 3}, {"near_source_blend": (3, 1)},
-                     {"near_source_blend": 2.0}, {"query_threads": 0}, {"query_threads": 3}):
+                     {"near_source_blend": 2.0}, {"query_threads": 0}, {"query_threads": 3},
+                     {"fallback": "dgpc"}):
         with pytest.raises(ValueError):
             heat.compute(0, vertices=30, **settings)
         with pytest.raises(ValueError):
