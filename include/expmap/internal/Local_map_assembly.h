@@ -38,44 +38,56 @@ inline double wrap_angle(double a) {
   return a;
 }
 
+/// Visits the faces of `mesh` whose three corners are all among the `count`
+/// vertices of a patch, `vertex(i)` the (renumbered) mesh vertex at patch
+/// position i: each face once, from the faces its smallest corner owns
+/// (stored with that vertex), as the positions of its corners in the face's
+/// order. Stops at the first face for which `visit` returns true, and
+/// returns whether it did. `position`, sized to the mesh, is scratch (a hash
+/// map would cost a good part of a small query).
+template <class VertexOf, class Visit>
+bool visit_patch_faces(const Mesh_arrays& mesh, std::size_t count, VertexOf vertex,
+                       Vertex_marks& position, Visit visit) {
+  position.next_query();
+  for (std::size_t i = 0; i < count; ++i) position.mark(vertex(i), static_cast<int>(i));
+  for (std::size_t i = 0; i < count; ++i) {
+    const int v = vertex(i);
+    for (int p = mesh.owned_face_start[v]; p < mesh.owned_face_start[v + 1]; ++p) {
+      const std::array<int, 3>& face = mesh.owned_face[p];
+      if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
+      const std::array<std::size_t, 3> corner{{i, static_cast<std::size_t>(position.value(face[1])),
+                                               static_cast<std::size_t>(position.value(face[2]))}};
+      if (visit(corner)) return true;
+    }
+  }
+  return false;
+}
+
 /// The fold-free disk of `map`, which must be nearest first, from the faces
 /// of `mesh`: the same triangles `patch_triangles()` finds in the user's
 /// mesh, and the same disk as `fold_free_radius()`. `map.indices` are the
-/// user's indices; `mesh` may be renumbered. `position`, sized to the mesh,
-/// is scratch (a hash map would cost a good part of a small query).
-///
-/// Every patch face is read once, from the faces its smallest corner owns
-/// (stored with that vertex): the pass is one of the query's cheapest.
+/// user's indices; `mesh` may be renumbered. `position` is scratch for
+/// `visit_patch_faces()`, whose pass is one of the query's cheapest.
 template <class VertexDescriptor>
 Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDescriptor>& map,
                               Vertex_marks& position) {
   Fold_free_disk disk;
   if (map.size() == 0) return disk;
   disk.radius = map.distance.back();
-  position.next_query();
   std::vector<std::array<double, 2>> uv;  // each vertex's once: sines and cosines are the cost
   uv.reserve(map.size());
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    position.mark(mesh.from_original(map.indices[i]), static_cast<int>(i));
-    uv.push_back(map.uv(i));
-  }
+  for (std::size_t i = 0; i < map.size(); ++i) uv.push_back(map.uv(i));
   const auto uv_of = [&](std::size_t i) { return uv[i]; };
-  for (std::size_t i = 0; i < map.size(); ++i) {
-    const int v = mesh.from_original(map.indices[i]);
-    for (int p = mesh.owned_face_start[v]; p < mesh.owned_face_start[v + 1]; ++p) {
-      const std::array<int, 3>& face = mesh.owned_face[p];
-      if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
-      const std::array<std::size_t, 3> corner{{i, static_cast<std::size_t>(position.value(face[1])),
-                                               static_cast<std::size_t>(position.value(face[2]))}};
-      ++disk.triangles;
-      if (signed_uv_area2(uv_of, corner) > 0) continue;
-      disk.folds = true;
-      ++disk.flipped;
-      disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]],
-                                                    map.distance[corner[1]],
-                                                    map.distance[corner[2]]}));
-    }
-  }
+  const auto vertex = [&](std::size_t i) { return mesh.from_original(map.indices[i]); };
+  visit_patch_faces(mesh, map.size(), vertex, position, [&](const std::array<std::size_t, 3>& corner) {
+    ++disk.triangles;
+    if (signed_uv_area2(uv_of, corner) > 0) return false;
+    disk.folds = true;
+    ++disk.flipped;
+    disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]], map.distance[corner[1]],
+                                                  map.distance[corner[2]]}));
+    return false;
+  });
   return disk;
 }
 

@@ -141,26 +141,14 @@ bool boundary_near(const Context& c, const Local_map<VertexDescriptor>& map,
 }
 
 // Whether the heat's map turns a patch triangle over (or collapses one),
-// from the (u, v) step 7 left in ws.patch_uv: each face read once, from
-// the faces its smallest corner owns, its area evaluated from the corner
-// nearest the source as `fold_free_disk()` does.
+// from the (u, v) step 7 left in ws.patch_uv: the faces `fold_free_disk()`
+// reads, stopping at the first that folds.
 inline bool folds(const Mesh_arrays& mesh, Workspace& ws) {
-  Vertex_marks& position = ws.map_position;
-  position.next_query();
   const std::vector<Workspace::Patch_uv>& patch = ws.patch_uv;
-  for (std::size_t k = 0; k < patch.size(); ++k) position.mark(patch[k].vertex, static_cast<int>(k));
   const auto uv_of = [&](std::size_t k) { return patch[k].uv; };
-  for (std::size_t k = 0; k < patch.size(); ++k) {
-    const int v = patch[k].vertex;
-    for (int p = mesh.owned_face_start[v]; p < mesh.owned_face_start[v + 1]; ++p) {
-      const std::array<int, 3>& face = mesh.owned_face[p];
-      if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
-      const std::array<std::size_t, 3> corner{{k, static_cast<std::size_t>(position.value(face[1])),
-                                               static_cast<std::size_t>(position.value(face[2]))}};
-      if (!(signed_uv_area2(uv_of, corner) > 0)) return true;
-    }
-  }
-  return false;
+  return visit_patch_faces(
+      mesh, patch.size(), [&](std::size_t k) { return patch[k].vertex; }, ws.map_position,
+      [&](const std::array<std::size_t, 3>& corner) { return !(signed_uv_area2(uv_of, corner) > 0); });
 }
 
 // The map a heat query returns: `heat_map` (empty if the heat failed), or
