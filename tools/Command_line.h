@@ -11,6 +11,7 @@
 
 #include <expmap/Angle_estimator.h>
 #include <expmap/Heat_options.h>
+#include <expmap/Option_names.h>
 
 #include <algorithm>
 #include <array>
@@ -21,6 +22,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace expmap_cli {
@@ -62,9 +64,9 @@ struct Compute_arguments {
   std::optional<std::size_t> vertex_count;
   std::string method = "heat";
   std::optional<double> time_factor;
-  std::optional<std::string> laplacian;  // "direct" or "intrinsic-delaunay"
-  std::optional<std::string> vertex_area;  // "mixed-voronoi" or "barycentric"
-  std::optional<std::string> factor_precision;  // "double" or "single"
+  std::optional<expmap::Laplacian_mode> laplacian;
+  std::optional<expmap::Vertex_area> vertex_area;
+  std::optional<expmap::Factor_precision> factor_precision;
   std::optional<std::string> query_threads;     // "1" or "2"
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
@@ -239,6 +241,16 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
         throw Usage_error(name + " must be '" + first + "' or '" + second + "' (got '" + *field +
                           "')");
     };
+    // A setting named as in expmap/Option_names.h (given at most once).
+    auto named = [&](auto& field) {
+      once(field.has_value());
+      try {
+        field = expmap::from_string<typename std::decay_t<decltype(field)>::value_type>(
+            take_value());
+      } catch (const expmap::Invalid_input& e) {
+        throw Usage_error(name + ": " + e.what());
+      }
+    };
 
     if (name == "-h" || name == "--help") {
       a.help = true;
@@ -264,27 +276,17 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
     } else if (name == "--time-factor") {
       positive_real(a.time_factor);
     } else if (name == "--laplacian") {
-      one_of(a.laplacian, "direct", "intrinsic-delaunay");
+      named(a.laplacian);
     } else if (name == "--vertex-area") {
-      one_of(a.vertex_area, "mixed-voronoi", "barycentric");
+      named(a.vertex_area);
     } else if (name == "--factor-precision") {
-      one_of(a.factor_precision, "double", "single");
+      named(a.factor_precision);
     } else if (name == "--query-threads") {
       one_of(a.query_threads, "1", "2");
     } else if (name == "--angles") {
-      once(a.angles.has_value());
-      try {
-        a.angles = expmap::angle_estimator_from_string(take_value());
-      } catch (const expmap::Invalid_input& e) {
-        throw Usage_error(std::string("--angles: ") + e.what());
-      }
+      named(a.angles);
     } else if (name == "--fallback") {
-      once(a.fallback.has_value());
-      try {
-        a.fallback = expmap::heat_fallback_from_string(take_value());
-      } catch (const expmap::Invalid_input& e) {
-        throw Usage_error(std::string("--fallback: ") + e.what());
-      }
+      named(a.fallback);
     } else if (name == "--near-source-blend") {
       once(a.near_source_blend.has_value());
       const std::string text = take_value();

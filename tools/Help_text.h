@@ -8,7 +8,9 @@
 /// (`expmap view` has its own, in viewer/).
 
 #include <expmap/Heat_options.h>
+#include <expmap/Option_names.h>
 
+#include <algorithm>
 #include <sstream>
 #include <string>
 
@@ -43,11 +45,56 @@ inline std::string general_help() {
          "             2 usage error (options and their values)\n";
 }
 
+/// `text` wrapped to lines of at most 79 characters, each after `indent`
+/// spaces but the first, which continues a line `first_column` long.
+inline std::string wrapped(const std::string& text, std::size_t indent,
+                           std::size_t first_column) {
+  std::istringstream words(text);
+  std::string out, word;
+  std::size_t column = first_column;
+  bool line_empty = true;
+  while (words >> word) {
+    if (!line_empty && column + 1 + word.size() > 79) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+      line_empty = true;
+    }
+    if (!line_empty) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    line_empty = false;
+  }
+  return out + "\n";
+}
+
+/// The help of a heat setting chosen by name (expmap/Option_names.h): the
+/// option, what it sets, and each value with its line of help, the default
+/// marked.
+template <class Enum>
+std::string named_option_help(const char* metavar, Enum default_value) {
+  using Names = expmap::Option_names<Enum>;
+  std::string head = "  --" + std::string(Names::option) + " " + metavar;
+  head.resize(std::max<std::size_t>(head.size() + 1, 23), ' ');
+  std::string h = head + wrapped(std::string("heat only: ") + Names::help + "; one of", 23,
+                                 head.size());
+  for (const auto& v : Names::values) {
+    const std::string name = std::string(25, ' ') + v.name +
+                             (v.alias ? std::string(" (or ") + v.alias + ")" : "") + ": ";
+    h += name + wrapped(std::string(v.help) + (v.value == default_value ? " (default)" : ""),
+                        27, name.size());
+  }
+  return h;
+}
+
 /// The options of the patch, the method and the input, which `compute` and
 /// `batch` share; `method_list` lists the methods, one indented line each.
 inline std::string map_options_help(const std::string& method_list) {
   std::ostringstream h;
   const expmap::Heat_options defaults;
+  const expmap::Heat_query_options query_defaults;
   h << "patch (exactly one):\n"
        "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
        "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
@@ -66,41 +113,26 @@ inline std::string map_options_help(const std::string& method_list) {
        "                       stops with an error before its first map\n"
        "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
        "                       length; larger is smoother (default: "
-    << defaults.time_factor
-    << ")\n"
-       "  --laplacian L        heat only: intrinsic-delaunay | direct; the former is\n"
-       "                       robust on poorly shaped triangles\n"
-       "                       (default: intrinsic-delaunay)\n"
-       "  --vertex-area A      heat only: mixed-voronoi | barycentric, the heat step's\n"
-       "                       mass matrix; the former gives more accurate angles on\n"
-       "                       irregular triangles (default: mixed-voronoi)\n"
-       "  --factor-precision P heat only: double | single, how the factors are kept\n"
-       "                       between queries; single about halves their memory and\n"
-       "                       is faster on large meshes, and moves the map by up to\n"
-       "                       about 4e-7 of its radius (default: double)\n"
-       "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
+    << defaults.time_factor << ")\n"
+    << named_option_help("L", defaults.laplacian)
+    << named_option_help("A", defaults.vertex_area)
+    << named_option_help("P", defaults.factor_precision)
+    << "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
        "                       2 the angles' solve runs beside the distance's,\n"
-       "                       0.79-0.97x the time on patches of 750+ vertices, the\n"
-       "                       same map up to round-off (default: 1; expmap batch on\n"
+       "                       0.79-0.93x the time on patches of 750+ vertices, the\n"
+       "                       same map up to round-off (default: "
+    << query_defaults.query_threads << "; expmap batch on\n"
        "                       more than one thread gives each a source and each map\n"
        "                       one thread)\n"
-       "  --angles A           heat only: how the angle is read off the heat around the\n"
-       "                       source: heat-quadratic-fit (least-squares quadratic of\n"
-       "                       h on the two-ring; two solves) | heat-gradient (the paper's\n"
-       "                       area-weighted gradient; two solves) | log-heat-gradient |\n"
-       "                       log-heat-quadratic-fit (of log h; one solve per\n"
-       "                       neighbour) (default: heat-quadratic-fit)\n"
-       "  --near-source-blend B,E  heat only: chord directions (and, for the source's\n"
+    << named_option_help("A", query_defaults.angle_estimator)
+    << "  --near-source-blend B,E  heat only: chord directions (and, for the source's\n"
        "                       neighbours, edge lengths) up to B mean edge lengths\n"
        "                       from the source, heat coordinates from E on, blended\n"
-       "                       between; 0,0 for pure heat coordinates (default: 2,6)\n"
-       "  --fallback F         heat only: geodesic-front | none; where the heat's map\n"
-       "                       folds over, meets a boundary or fails, the geodesic\n"
-       "                       front's (DGPC's) map of the patch, held to the heat's\n"
-       "                       map inside its fold-free disk away from boundaries,\n"
-       "                       if it folds less; none keeps the paper's map\n"
-       "                       (default: geodesic-front)\n"
-       "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
+       "                       between; 0,0 for pure heat coordinates (default: "
+    << query_defaults.near_source_blend.begin << "," << query_defaults.near_source_blend.end
+    << ")\n"
+    << named_option_help("F", query_defaults.fallback)
+    << "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"
        "                       the normal is within 30 degrees of x)\n"
        "input (what is repaired is said on stderr as 'expmap: note: ...'):\n"

@@ -64,23 +64,6 @@ std::size_t vertices_within(const CGAL::Surface_mesh<Point>& mesh,
   return std::min(count, cap + 1);
 }
 
-/// The position of the point of `face` with barycentric coordinates
-/// `barycentric`, in the corner order of `expmap::Surface_point` (as
-/// CGAL's face locations): source(h), target(h), target(next(h)) for
-/// h = halfedge(face).
-template <class Point>
-std::array<double, 3> surface_point_position(const CGAL::Surface_mesh<Point>& mesh,
-                                             typename CGAL::Surface_mesh<Point>::Face_index face,
-                                             const std::array<double, 3>& barycentric) {
-  const auto h = mesh.halfedge(face);
-  const typename CGAL::Surface_mesh<Point>::Vertex_index corner[3] = {
-      mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
-  std::array<double, 3> x{};
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) x[d] += barycentric[k] * CGAL::to_double(mesh.point(corner[k])[d]);
-  return x;
-}
-
 /// The number of vertices `patch` asks for on `mesh`: a count or fraction
 /// patch's count (at most the mesh's), a vertex set's size, or for a
 /// radius patch `vertices_within()` the radius of `center` from `face`,

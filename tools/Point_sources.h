@@ -153,7 +153,7 @@ class Point_sources {
     std::ostringstream s;
     s.precision(6);
     const auto in_file = file_faces().input_point(p);
-    const std::array<double, 3> x = position(p);
+    const std::array<double, 3> x = expmap::surface_point_position(m_mesh, p);
     s << "point (" << x[0] << ", " << x[1] << ", " << x[2] << ")";
     if (in_file) {
       const auto& w = in_file->barycentric;
@@ -166,17 +166,6 @@ class Point_sources {
   }
 
  private:
-  std::array<double, 3> position(const Surface_point& p) const {
-    const auto h = m_mesh.halfedge(p.face);
-    const typename Mesh::Vertex_index corners[3] = {m_mesh.source(h), m_mesh.target(h),
-                                                    m_mesh.target(m_mesh.next(h))};
-    std::array<double, 3> x{{0, 0, 0}};
-    for (int k = 0; k < 3; ++k)
-      for (int d = 0; d < 3; ++d)
-        x[d] += p.barycentric[k] * CGAL::to_double(m_mesh.point(corners[k])[d]);
-    return x;
-  }
-
   // The file's faces as it lists them, read again (the mesh's may be
   // reordered, split or repaired).
   const expmap::IO::Input_faces<Mesh>& file_faces() {

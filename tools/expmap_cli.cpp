@@ -97,17 +97,9 @@ using Heat = expmap::Heat_exponential_map<Mesh>;
 expmap::Heat_options heat_options(const Compute_arguments& a) {
   expmap::Heat_options options;
   if (a.time_factor) options.time_factor = *a.time_factor;
-  if (a.laplacian == std::string("intrinsic-delaunay"))
-    options.laplacian = expmap::Laplacian_mode::intrinsic_delaunay;
-  else if (a.laplacian == std::string("direct"))
-    options.laplacian = expmap::Laplacian_mode::direct;
-  if (a.vertex_area)
-    options.vertex_area = *a.vertex_area == "barycentric" ? expmap::Vertex_area::barycentric
-                                                          : expmap::Vertex_area::mixed_voronoi;
-  if (a.factor_precision)
-    options.factor_precision = *a.factor_precision == "single"
-                                   ? expmap::Factor_precision::single_precision
-                                   : expmap::Factor_precision::double_precision;
+  if (a.laplacian) options.laplacian = *a.laplacian;
+  if (a.vertex_area) options.vertex_area = *a.vertex_area;
+  if (a.factor_precision) options.factor_precision = *a.factor_precision;
   return options;
 }
 
@@ -289,54 +281,52 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
 // The one place that knows the methods: parsing, help, dispatch and the
 // caption all read this table, so a new method is one more row.
 struct Method {
-  const char* name;
-  const char* summary;      // for --help
+  expmap::Map_method id;    // its name and --help line are the library's (Option_names.h)
   const char* description;  // for the summary and the SVG caption (heat adds its settings)
   bool takes_heat_options;  // --time-factor, --laplacian, --angles and the like
   Run (*run)(const Mesh&, const Compute_arguments&, const Source&, const expmap::Patch&,
              const expmap::Query_options&);
   Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const Batch_sources&,
                         const expmap::Patch&, const expmap::Query_options&, Batch_output&);
+  std::string name() const { return expmap::to_string(id); }
 };
 
 template <class Method_class>
-constexpr Method method_row(const char* name, const char* summary, const char* description,
+constexpr Method method_row(expmap::Map_method id, const char* description,
                             bool takes_heat_options) {
-  return {name,
-          summary,
-          description,
-          takes_heat_options,
-          run_one<Method_class>,
-          run_many<Method_class>};
+  return {id, description, takes_heat_options, run_one<Method_class>, run_many<Method_class>};
 }
 
 const Method methods[] = {
-    method_row<Heat>("heat", "smoothed, by heat diffusion (Herholz & Alexa)", "heat method", true),
+    method_row<Heat>(expmap::Map_method::heat, "heat method", true),
     method_row<expmap::Discrete_exponential_map<Mesh>>(
-        "dem", "discrete exponential map (Schmidt et al.)", "DEM (discrete exponential map)", false),
+        expmap::Map_method::dem, "DEM (discrete exponential map)", false),
     method_row<expmap::Geodesic_polar_coordinates<Mesh>>(
-        "dgpc", "geodesic polar coordinates (Melvaer & Reimers)",
-        "DGPC (discrete geodesic polar coordinates)", false),
+        expmap::Map_method::dgpc, "DGPC (discrete geodesic polar coordinates)", false),
     method_row<expmap::Exact_exponential_map<Mesh>>(
-        "exact", "exact polyhedral geodesics; slow, a reference",
-        "exact polyhedral exponential map", false),
+        expmap::Map_method::exact, "exact polyhedral exponential map", false),
 };
+static_assert(std::size(methods) == std::size(expmap::Option_names<expmap::Map_method>::values),
+              "a method of expmap::Map_method has no row here");
 
 const Method& find_method(const std::string& name) {
-  for (const Method& m : methods)
-    if (name == m.name) return m;
-  std::string known;
-  for (const Method& m : methods) known += std::string(known.empty() ? "" : ", ") + m.name;
-  throw Usage_error("unknown method '" + name + "' (known: " + known + ")");
+  try {
+    const expmap::Map_method id = expmap::from_string<expmap::Map_method>(name);
+    for (const Method& m : methods)
+      if (m.id == id) return m;
+  } catch (const expmap::Invalid_input& e) {
+    throw Usage_error(e.what());
+  }
+  throw Usage_error("method '" + name + "' is not built into this program");
 }
 
-// The --method lines of the help, from the table.
+// The --method lines of the help, from the library's table.
 std::string method_list() {
   std::string lines;
-  for (const Method& m : methods) {
+  for (const auto& m : expmap::Option_names<expmap::Map_method>::values) {
     std::string name = m.name;
     name.resize(std::max<std::size_t>(name.size() + 1, 7), ' ');
-    lines += "                         " + name + m.summary + "\n";
+    lines += "                         " + name + m.help + "\n";
   }
   return lines;
 }

@@ -96,7 +96,7 @@ Options parse(int argc, char** argv) {
     else if (a == "--sources") o.sources = std::stoul(value());
     else if (a == "--interior") o.interior = std::stoul(value());
     else if (a == "--max-vertices") o.max_vertices = std::stoul(value());
-    else if (a == "--heat-fallback") o.heat_fallback = expmap::heat_fallback_from_string(value());
+    else if (a == "--heat-fallback") o.heat_fallback = expmap::from_string<expmap::Heat_fallback>(value());
     else if (a == "--csv") o.csv = value();
     else if (a == "--summary-csv") o.summary_csv = value();
     else throw std::invalid_argument("unknown argument " + a);

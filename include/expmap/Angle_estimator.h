@@ -7,10 +7,6 @@
 /// How the heat method reads the polar angle off the heat (the paper's
 /// step 3), and where it takes the geometry's direction instead.
 
-#include <expmap/Errors.h>
-
-#include <string>
-
 namespace expmap {
 
 /// \ingroup PkgExpmapRef
@@ -85,33 +81,6 @@ struct Near_source_blend {
   double begin = 2.0;  ///< in mean edge lengths h; at least 0
   double end = 6.0;    ///< in mean edge lengths h; at least `begin`
 };
-
-/// \ingroup PkgExpmapRef
-/// The estimator's name as the command-line program and the Python module
-/// spell it: "heat-gradient", "log-heat-gradient", "log-heat-quadratic-fit"
-/// or "heat-quadratic-fit".
-inline std::string to_string(Angle_estimator estimator) {
-  switch (estimator) {
-    case Angle_estimator::heat_gradient: return "heat-gradient";
-    case Angle_estimator::log_heat_gradient: return "log-heat-gradient";
-    case Angle_estimator::log_heat_quadratic_fit: return "log-heat-quadratic-fit";
-    case Angle_estimator::heat_quadratic_fit: return "heat-quadratic-fit";
-  }
-  return "unknown";
-}
-
-/// \ingroup PkgExpmapRef
-/// The estimator named `name` (see `to_string()`).
-/// \throws Invalid_input for any other name, listing the valid ones.
-inline Angle_estimator angle_estimator_from_string(const std::string& name) {
-  for (Angle_estimator e : {Angle_estimator::heat_gradient, Angle_estimator::log_heat_gradient,
-                            Angle_estimator::log_heat_quadratic_fit,
-                            Angle_estimator::heat_quadratic_fit})
-    if (to_string(e) == name) return e;
-  throw Invalid_input("unknown angle estimator '" + name +
-                      "' (valid: heat-gradient, log-heat-gradient, log-heat-quadratic-fit, "
-                      "heat-quadratic-fit)");
-}
 
 }  // namespace expmap
 

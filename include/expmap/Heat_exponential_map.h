@@ -14,6 +14,7 @@
 #include <expmap/Errors.h>
 #include <expmap/Heat_options.h>
 #include <expmap/Local_map.h>
+#include <expmap/Option_names.h>
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Locality_order.h>

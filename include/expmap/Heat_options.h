@@ -72,22 +72,6 @@ enum class Heat_fallback {
 };
 
 /// \ingroup PkgExpmapRef
-/// The fallback's name as the command-line program and the Python module
-/// spell it: "geodesic-front" or "none".
-inline std::string to_string(Heat_fallback fallback) {
-  return fallback == Heat_fallback::geodesic_front ? "geodesic-front" : "none";
-}
-
-/// \ingroup PkgExpmapRef
-/// The fallback named `name` (see `to_string()`).
-/// \throws Invalid_input for any other name, listing the valid ones.
-inline Heat_fallback heat_fallback_from_string(const std::string& name) {
-  for (Heat_fallback f : {Heat_fallback::geodesic_front, Heat_fallback::none})
-    if (to_string(f) == name) return f;
-  throw Invalid_input("unknown fallback '" + name + "' (valid: geodesic-front, none)");
-}
-
-/// \ingroup PkgExpmapRef
 /// The precomputation's settings of a `Heat_exponential_map`: they change
 /// the operators and factorizations its constructor builds.
 struct Heat_options {

@@ -140,6 +140,27 @@ Surface_point<typename boost::graph_traits<TriangleMesh>::face_descriptor> locat
   return Surface_point_locator<TriangleMesh>(tm).locate(xyz);
 }
 
+/// \ingroup PkgExpmapRef
+/// The position of `point` on `tm`: its corners' points weighted by its
+/// barycentric coordinates, in the corner order of `Surface_point` (CGAL's
+/// `Polygon_mesh_processing::construct_point()` of the same face location).
+template <class TriangleMesh>
+std::array<double, 3> surface_point_position(
+    const TriangleMesh& tm,
+    const Surface_point<typename boost::graph_traits<TriangleMesh>::face_descriptor>& point) {
+  const auto h = halfedge(point.face, tm);
+  const auto points = get(CGAL::vertex_point, tm);
+  const decltype(source(h, tm)) corners[3] = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
+  std::array<double, 3> x{{0, 0, 0}};
+  for (int k = 0; k < 3; ++k) {
+    const auto& p = get(points, corners[k]);
+    x[0] += point.barycentric[k] * CGAL::to_double(p.x());
+    x[1] += point.barycentric[k] * CGAL::to_double(p.y());
+    x[2] += point.barycentric[k] * CGAL::to_double(p.z());
+  }
+  return x;
+}
+
 }  // namespace expmap
 
 #endif  // EXPMAP_LOCATE_SURFACE_POINT_H

@@ -27,6 +27,8 @@ spreads many meshes over a Dask cluster. expmap.__version__ is the
 library's version (include/expmap/version.h), compiled into the module.
 """
 
+# METHODS: the method classes by the names the command-line program uses
+# (--method), the library's.
 from ._expmap import (
     AngleEstimator,
     BatchMap,
@@ -41,20 +43,13 @@ from ._expmap import (
     InvalidInput,
     LaplacianMode,
     LocalMap,
+    METHODS,
     MeshFileError,
     PoissonRegularization,
     VertexArea,
     read_mesh,
     __version__,
 )
-
-#: The method classes by the names the command-line program uses (--method).
-METHODS = {
-    "heat": HeatExponentialMap,
-    "dem": DiscreteExponentialMap,
-    "dgpc": GeodesicPolarCoordinates,
-    "exact": ExactExponentialMap,
-}
 
 __all__ = [
     "AngleEstimator",

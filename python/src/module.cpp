@@ -8,6 +8,8 @@
 #include "Face_points.h"
 #include "Map_arrays.h"
 #include "Mesh_from_arrays.h"
+#include "Named_enums.h"
+#include "Result_classes.h"
 
 #include <expmap/Batch.h>
 #include <expmap/Discrete_exponential_map.h>
@@ -193,23 +195,6 @@ expmap::Query_options shared_query_argument(py::handle reference, bool trim_fold
   return query;
 }
 
-/// An option given as a member of the bound enum `E` or by its name.
-template <class E>
-E enum_argument(py::handle value, const char* option) {
-  const py::dict members = py::type::of<E>().attr("__members__");
-  if (py::isinstance<py::str>(value)) {
-    std::string name = value.cast<std::string>();
-    std::replace(name.begin(), name.end(), '-', '_');  // the CLI spells them with hyphens
-    if (members.contains(name)) return members[name.c_str()].template cast<E>();
-  } else if (py::isinstance<E>(value)) {
-    return value.cast<E>();
-  }
-  std::string known;
-  for (auto item : members) known += (known.empty() ? "" : ", ") + item.first.cast<std::string>();
-  throw expmap::Invalid_input(std::string(option) + " must be one of " + known + " (got " +
-                              py::repr(value).cast<std::string>() + ")");
-}
-
 /// A float from any Python real number.
 double number_argument(py::handle value, const char* name) {
   const double x = PyFloat_AsDouble(value.ptr());
@@ -277,48 +262,6 @@ expmap::Heat_query_options query_argument<expmap::Heat_exponential_map<Mesh>>(
   }
   return expmap::checked(query);
 }
-
-/// The namedtuple type `expmap.BatchMap` (made once, in the module's init;
-/// the module keeps it alive for as long as any function can run).
-py::handle batch_map_type;
-
-/// Source `i` of `b` (0 <= i < len(b)) as a `BatchMap`: its rows of the flat
-/// arrays as NumPy views (basic slices: no copies, and each keeps the flat
-/// array alive) and its error, None if its query succeeded.
-py::object batch_map(const Batch_arrays& b, std::size_t i) {
-  const std::int64_t* offset = b.offsets.data();
-  const py::slice rows(static_cast<py::ssize_t>(offset[i]), static_cast<py::ssize_t>(offset[i + 1]),
-                       1);
-  py::object error = py::none();
-  if (!b.errors[i].empty()) error = py::str(b.errors[i]);
-  return batch_map_type(b.sources.data()[i], b.vertex[rows], b.r[rows], b.theta[rows], b.u[rows],
-                        b.v[rows], error);
-}
-
-/// The index `batch[index]` names: any Python integer, negative from the end.
-std::size_t batch_index(const Batch_arrays& b, py::handle index) {
-  const py::object integer = py::reinterpret_steal<py::object>(PyNumber_Index(index.ptr()));
-  if (!integer) {
-    PyErr_Clear();
-    throw py::type_error("BatchMaps indices must be integers (got " +
-                         std::string(py::str(py::type::of(index).attr("__name__"))) + ")");
-  }
-  const py::ssize_t n = static_cast<py::ssize_t>(b.errors.size());
-  const py::ssize_t i = PyLong_AsSsize_t(integer.ptr());
-  if (i == -1 && PyErr_Occurred()) PyErr_Clear();  // too large either way: out of range below
-  const bool overflow = i == -1 && !integer.equal(py::int_(-1));
-  if (overflow || i < -n || i >= n)
-    throw py::index_error("BatchMaps index " + std::string(py::str(integer)) +
-                          " is out of range (" + std::to_string(n) + " sources)");
-  return static_cast<std::size_t>(i < 0 ? i + n : i);
-}
-
-/// What `iter(batch)` returns: the `BatchMap` of each source in turn. It
-/// holds the batch, so the loop may outlive the caller's reference.
-struct Batch_iterator {
-  py::object batch;
-  std::size_t next = 0;
-};
 
 const char* const patch_doc =
     "The patch is exactly one of: ``radius`` (every vertex within that geodesic\n"
@@ -460,6 +403,7 @@ void bind_heat(py::module_& m) {
   using Method = expmap::Heat_exponential_map<Mesh>;
   using Bound = Bound_method<Method>;
   const expmap::Heat_options defaults;
+  const expmap::Heat_query_options query_defaults;
   py::class_<Bound> c(
       m, "HeatExponentialMap",
       "The smoothed exponential map of Herholz & Alexa (Computer Graphics Forum\n"
@@ -500,19 +444,15 @@ void bind_heat(py::module_& m) {
         py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
         py::arg("poisson_compression_tolerance") = defaults.poisson_compression_tolerance,
-        "Precomputes operators and factorizations of the mesh (vertices: float\n"
+        std::string("Precomputes operators and factorizations of the mesh (vertices: float\n"
         "array n x 3; faces: integer array m x 3, made a mesh as for\n"
         "DiscreteExponentialMap).\n\n"
         "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
-        "    larger is smoother.\n"
-        "laplacian: a LaplacianMode or its name ('intrinsic_delaunay', 'direct').\n"
-        "vertex_area: a VertexArea or its name ('mixed_voronoi', 'barycentric'): the\n"
-        "    heat step's mass matrix.\n"
-        "factor_precision: a FactorPrecision or its name ('double_precision',\n"
-        "    'single_precision'): how the factors are kept between queries; single\n"
-        "    about halves their memory and is faster on large meshes, and moves the\n"
-        "    map by up to about 4e-7 of its radius.\n"
-        "regularization: a PoissonRegularization or its name.\n"
+        "    larger is smoother.\n" +
+         enum_setting_doc("laplacian", "LaplacianMode", defaults.laplacian) +
+         enum_setting_doc("vertex_area", "VertexArea", defaults.vertex_area) +
+         enum_setting_doc("factor_precision", "FactorPrecision", defaults.factor_precision) +
+         enum_setting_doc("regularization", "PoissonRegularization", defaults.regularization) +
         "poisson_compression_tolerance: the Poisson factor's large separators\n"
         "    compressed to this relative tolerance, their rows below as truncated\n"
         "    SVDs (in [0, 1e-10]; 0: dense); fewer entries read per query on large\n"
@@ -522,24 +462,22 @@ void bind_heat(py::module_& m) {
         "    patch (at least 1; default 2).\n"
         "pruning_tolerance: heat solves of small patches of large meshes skip\n"
         "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
-        "    never; default 1e-12).\n"
-        "angle_estimator: an AngleEstimator or its name (default heat_quadratic_fit:\n"
-        "    a quadratic fit of the heat on the two-ring, two solves per query).\n"
+        "    never; default 1e-12).\n" +
+         enum_setting_doc("angle_estimator", "AngleEstimator", query_defaults.angle_estimator) +
         "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"
         "    the source's neighbours' edge lengths) up to begin from the source, heat\n"
         "    coordinates from end on, blended between; each query scales both so\n"
         "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
-        "    (0, 0) for the paper's pure heat coordinates.\n"
-        "fallback: a HeatFallback or its name (default geodesic_front: where the\n"
-        "    heat's map folds a triangle over, meets a boundary or fails, the geodesic\n"
-        "    front's (DGPC's) map if it folds fewer; 'none': the paper's map always).\n"
+        "    (0, 0) for the paper's pure heat coordinates.\n" +
+         enum_setting_doc("fallback", "HeatFallback", query_defaults.fallback) +
         "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
-        "    runs beside the distance's (the same maps up to round-off, 0.79-0.97x\n"
+        "    runs beside the distance's (the same maps up to round-off, 0.79-0.93x\n"
         "    the time on patches of 750+ vertices). compute_many on more than one\n"
         "    thread runs a source per thread, each on one, and gives the same maps\n"
         "    bit for bit on any number of threads.\n\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options\n"
-        "(a query's settings when it is asked).");
+        "(a query's settings when it is asked).")
+            .c_str());
   add_queries(c);
   c.def_property_readonly(
       "time_step", [](const Bound& b) { return b.method->time_step(); },
@@ -607,136 +545,15 @@ PYBIND11_MODULE(_expmap, m) {
     }
   });
 
-  // The enums are listed once, here; Python code reads them from
-  // __members__, never from a list of its own.
-  py::enum_<expmap::Laplacian_mode>(m, "LaplacianMode",
-                                    "Which triangulation the Laplacian is built on.")
-      .value("direct", expmap::Laplacian_mode::direct)
-      .value("intrinsic_delaunay", expmap::Laplacian_mode::intrinsic_delaunay);
-  py::enum_<expmap::Vertex_area>(m, "VertexArea",
-                                 "The area each vertex stands for in the heat step's mass matrix.")
-      .value("barycentric", expmap::Vertex_area::barycentric)
-      .value("mixed_voronoi", expmap::Vertex_area::mixed_voronoi);
-  py::enum_<expmap::Factor_precision>(m, "FactorPrecision",
-                                      "The precision the Cholesky factors are kept in.")
-      .value("double_precision", expmap::Factor_precision::double_precision)
-      .value("single_precision", expmap::Factor_precision::single_precision);
-  py::enum_<expmap::Poisson_regularization>(
-      m, "PoissonRegularization", "How the singular Poisson system of the distance is made definite.")
-      .value("pinned_vertex", expmap::Poisson_regularization::pinned_vertex)
-      .value("cgal_compatible", expmap::Poisson_regularization::cgal_compatible);
-  py::enum_<expmap::Angle_estimator>(m, "AngleEstimator",
-                                     "How the direction of the geodesic is read off the heat.")
-      .value("heat_gradient", expmap::Angle_estimator::heat_gradient)
-      .value("log_heat_gradient", expmap::Angle_estimator::log_heat_gradient)
-      .value("log_heat_quadratic_fit", expmap::Angle_estimator::log_heat_quadratic_fit)
-      .value("heat_quadratic_fit", expmap::Angle_estimator::heat_quadratic_fit);
-
-  py::enum_<expmap::Heat_fallback>(m, "HeatFallback",
-                                   "What a heat query returns where the heat's angles are blind.")
-      .value("geodesic_front", expmap::Heat_fallback::geodesic_front)
-      .value("none", expmap::Heat_fallback::none);
-
-  py::class_<Map_arrays>(m, "LocalMap",
-                         "One local map: the patch vertices, nearest first, and their polar\n"
-                         "(r, theta) and Cartesian (uv) coordinates.")
-      .def_readonly("source", &Map_arrays::source, "The source vertex.")
-      .def_readonly("vertices", &Map_arrays::vertices, "Patch vertex indices (int64), nearest first.")
-      .def_readonly("r", &Map_arrays::r, "Geodesic distance of each patch vertex.")
-      .def_readonly("theta", &Map_arrays::theta, "Polar angle in (-pi, pi].")
-      .def_readonly("uv", &Map_arrays::uv, "n x 2: (r cos theta, r sin theta).")
-      .def_readonly("normal", &Map_arrays::normal, "Unit normal of the tangent plane.")
-      .def_readonly("axis_u", &Map_arrays::axis_u, "Tangent axis of angle 0.")
-      .def_readonly("axis_v", &Map_arrays::axis_v, "Tangent axis of angle pi/2.")
-      .def_readonly("fold_free_radius", &Map_arrays::fold_free_radius,
-                    "Where the map is one-to-one: the largest r such that no triangle with\n"
-                    "all corners nearer than r is flipped or collapsed in uv; max(r) if\n"
-                    "none is flipped.")
-      .def_property_readonly(
-          "statistics",
-          [](const Map_arrays& a) {
-            py::dict d;
-            d["forward_nodes"] = a.statistics.forward_nodes;
-            d["backward_nodes"] = a.statistics.backward_nodes;
-            d["factor_entries"] = a.statistics.factor_entries;
-            d["solve_seconds"] = a.statistics.solve_seconds;
-            d["region_retries"] = a.statistics.region_retries;
-            d["front_checks"] = a.statistics.front_checks;
-            d["front_maps"] = a.statistics.front_maps;
-            return d;
-          },
-          "The heat query's work (zeros for the other methods): elimination-tree nodes\n"
-          "visited by forward and back substitution, factor entries read, seconds in\n"
-          "the solves, how often the region was doubled because the patch came\n"
-          "too close to its edge (region_retries), and whether the geodesic front's\n"
-          "map was computed (front_checks) and returned (front_maps; see fallback).")
-      .def("__len__", [](const Map_arrays& a) { return a.vertices.size(); })
-      .def("__repr__", [](const Map_arrays& a) {
-        return "<LocalMap source " + std::to_string(a.source) + ", " +
-               std::to_string(a.vertices.size()) + " vertices>";
-      });
-
-  // A namedtuple: it unpacks, compares and prints as Python users expect,
-  // and its fields are the arrays themselves (views), not copies.
-  py::object batch_map_namedtuple = py::module_::import("collections").attr("namedtuple")(
-      "BatchMap", py::make_tuple("source", "vertices", "r", "theta", "u", "v", "error"));
-  batch_map_namedtuple.attr("__module__") = "expmap";
-  batch_map_namedtuple.attr("__doc__") =
-      "One source's map in a BatchMaps (batch[i]): source (int), vertices, r, theta,\n"
-      "u, v (NumPy views of the batch's rows offsets[i] to offsets[i+1] of vertex,\n"
-      "r, theta, u, v: no copies, writing to them writes to the batch) and error\n"
-      "(None, or why the source's query failed; its arrays are then empty).";
-  m.attr("BatchMap") = batch_map_namedtuple;
-  batch_map_type = batch_map_namedtuple;
-
-  py::class_<Batch_iterator>(m, "BatchMapsIterator", "Iterates over a BatchMaps' BatchMap values.")
-      .def("__iter__", [](py::object self) { return self; })
-      .def("__next__", [](Batch_iterator& it) {
-        const Batch_arrays& b = it.batch.cast<const Batch_arrays&>();
-        if (it.next >= b.errors.size()) throw py::stop_iteration();
-        return batch_map(b, it.next++);
-      });
-
-  py::class_<Batch_arrays>(
-      m, "BatchMaps",
-      "Many maps in the layout of `expmap batch -o OUT.npz`: rows offsets[i] to\n"
-      "offsets[i+1] of vertex, r, theta, u, v belong to sources[i]. A source whose\n"
-      "query failed has no rows and its message in errors[i] ('' otherwise).\n"
-      "A sequence of the sources' maps: batch[i] (negative i counts from the end)\n"
-      "is the BatchMap of sources[i], its arrays views into the flat ones, and\n"
-      "iterating gives them in order, e.g. ``for s, m in zip(sources, batch)``.")
-      .def_readonly("sources", &Batch_arrays::sources, "The sources (int64, k).")
-      .def_readonly("offsets", &Batch_arrays::offsets, "Row range of each source (int64, k + 1).")
-      .def_readonly("vertex", &Batch_arrays::vertex, "Patch vertex of each row (int64).")
-      .def_readonly("r", &Batch_arrays::r, "Geodesic distance of each row.")
-      .def_readonly("theta", &Batch_arrays::theta, "Polar angle of each row.")
-      .def_readonly("u", &Batch_arrays::u, "r cos theta of each row.")
-      .def_readonly("v", &Batch_arrays::v, "r sin theta of each row.")
-      .def_readonly("fold_free_radius", &Batch_arrays::fold_free_radius,
-                    "Per source: its map's fold-free radius (LocalMap.fold_free_radius;\n"
-                    "NaN where the query failed).")
-      .def_readonly("errors", &Batch_arrays::errors, "Per source: '' or why its query failed.")
-      .def_property_readonly("failures", &Batch_arrays::failures, "How many queries failed.")
-      .def("as_dict", &Batch_arrays::as_dict,
-           "The eight arrays by name (sources, offsets, vertex, r, theta, u, v,\n"
-           "fold_free_radius), as numpy.savez takes them.")
-      .def("__len__", [](const Batch_arrays& b) { return b.errors.size(); })
-      .def(
-          "__getitem__",
-          [](const Batch_arrays& b, py::handle index) {
-            return batch_map(b, batch_index(b, index));
-          },
-          py::arg("index"),
-          "batch[i] -> BatchMap: the map of sources[i] (i < 0 counts from the end).\n"
-          "Raises IndexError if i is out of range, TypeError if it is not an integer.")
-      .def(
-          "__iter__", [](py::object self) { return Batch_iterator{self}; },
-          "The BatchMap of each source, in the order of sources.")
-      .def("__repr__", [](const Batch_arrays& b) {
-        return "<BatchMaps " + std::to_string(b.errors.size()) + " sources, " +
-               std::to_string(b.vertex.size()) + " rows, " + std::to_string(b.failures()) +
-               " failed>";
-      });
+  // Python code reads the enums' names from __members__, never from a list of
+  // its own; the names are the library's (expmap/Option_names.h).
+  bind_named_enum<expmap::Laplacian_mode>(m, "LaplacianMode");
+  bind_named_enum<expmap::Vertex_area>(m, "VertexArea");
+  bind_named_enum<expmap::Factor_precision>(m, "FactorPrecision");
+  bind_named_enum<expmap::Poisson_regularization>(m, "PoissonRegularization");
+  bind_named_enum<expmap::Angle_estimator>(m, "AngleEstimator");
+  bind_named_enum<expmap::Heat_fallback>(m, "HeatFallback");
+  bind_result_classes(m);
 
   m.def(
       "read_mesh",
@@ -801,4 +618,17 @@ PYBIND11_MODULE(_expmap, m) {
       "slow, a reference for the others.\n\n"
       "    exact = expmap.ExactExponentialMap(V, F)\n"
       "    local = exact.compute(0, fraction=0.01)\n");
+
+  // expmap.METHODS: the classes by the library's method names.
+  using expmap::Map_method;
+  const std::pair<Map_method, const char*> classes[] = {
+      {Map_method::heat, "HeatExponentialMap"},
+      {Map_method::dem, "DiscreteExponentialMap"},
+      {Map_method::dgpc, "GeodesicPolarCoordinates"},
+      {Map_method::exact, "ExactExponentialMap"}};
+  static_assert(std::size(classes) == std::size(expmap::Option_names<Map_method>::values),
+                "a method of expmap::Map_method has no Python class");
+  py::dict methods;
+  for (const auto& [method, name] : classes) methods[expmap::to_string(method).c_str()] = m.attr(name);
+  m.attr("METHODS") = methods;
 }

@@ -4,6 +4,7 @@
 #ifndef EXPMAP_TEST_SURFACE_POINT_FIXTURES_H
 #define EXPMAP_TEST_SURFACE_POINT_FIXTURES_H
 
+#include <expmap/Locate_surface_point.h>
 #include <expmap/Surface_point.h>
 
 #include <boost/test/unit_test.hpp>
@@ -19,15 +20,9 @@ namespace expmap_test {
 using Face = Surface_mesh::Face_index;
 using Point_source = expmap::Surface_point<Face>;
 
-inline std::array<double, 3> position(const Surface_mesh& mesh, const Point_source& p) {
-  const auto h = mesh.halfedge(p.face);
-  const Point corners[3] = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
-                            mesh.point(mesh.target(mesh.next(h)))};
-  std::array<double, 3> x{{0, 0, 0}};
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) x[d] += p.barycentric[k] * corners[k][d];
-  return x;
-}
+// Positions of surface points: the library's (checked against CGAL's
+// construct_point in test_surface_points.cpp).
+using expmap::surface_point_position;
 
 inline double mean_edge_length(const Surface_mesh& mesh) {
   double sum = 0;
@@ -126,7 +121,7 @@ void check_edge_point_from_both_faces(const expmap_analytic::Triangle_soup& soup
     const auto b = method.compute(q, patch);
     BOOST_TEST(a.size() > 100u);
     check_same_map(a, b, tolerance);
-    const Sphere_errors e = point_sphere_errors(a, position(mesh, p), soup);
+    const Sphere_errors e = point_sphere_errors(a, surface_point_position(mesh, p), soup);
     Sphere_errors ends;
     for (auto v : {mesh.source(h), mesh.target(h)}) {
       const Sphere_errors c = sphere_errors(method.compute(v, patch), soup);
@@ -160,7 +155,7 @@ void check_sphere_point_as_accurate_as_a_vertex(const char* name,
   const auto batch = method.compute_many(points, patch, two_threads);
   BOOST_TEST(batch.failures() == 0u);
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Sphere_errors e = point_sphere_errors(batch.maps[i], position(mesh, points[i]), soup);
+    const Sphere_errors e = point_sphere_errors(batch.maps[i], surface_point_position(mesh, points[i]), soup);
     Sphere_errors corners;
     for (auto v : CGAL::vertices_around_face(mesh.halfedge(points[i].face), mesh)) {
       const Sphere_errors c = sphere_errors(method.compute(v, patch), soup);
@@ -294,7 +289,7 @@ void check_no_jump(const char* name, const expmap_analytic::Triangle_soup& soup,
     Point_source p{face, from};
     Point_source corner{face, {{0, 0, 0}}};
     corner.barycentric[k] = 1;
-    const auto x = position(mesh, p), c = position(mesh, corner);
+    const auto x = surface_point_position(mesh, p), c = surface_point_position(mesh, corner);
     const double t = length / std::sqrt(CGAL::squared_distance(Point(x[0], x[1], x[2]),
                                                                Point(c[0], c[1], c[2])));
     for (int i = 0; i < 3; ++i) p.barycentric[i] = (1 - t) * from[i] + (i == k ? t : 0.0);
@@ -306,8 +301,8 @@ void check_no_jump(const char* name, const expmap_analytic::Triangle_soup& soup,
     double largest = 0;
     for (std::size_t i = 0; i < a.size(); ++i) {
       const auto& x = soup.points[a.indices[i]];
-      const auto s = expmap_analytic::sphere_exponential_map(position(mesh, p), x, 1.0, a.axis_u);
-      const auto t = expmap_analytic::sphere_exponential_map(position(mesh, q), x, 1.0, b.axis_u);
+      const auto s = expmap_analytic::sphere_exponential_map(surface_point_position(mesh, p), x, 1.0, a.axis_u);
+      const auto t = expmap_analytic::sphere_exponential_map(surface_point_position(mesh, q), x, 1.0, b.axis_u);
       largest = std::max(largest, std::hypot(s.r * std::cos(s.theta_unrotated) -
                                                  t.r * std::cos(t.theta_unrotated),
                                              s.r * std::sin(s.theta_unrotated) -
@@ -380,7 +375,7 @@ void check_exact_on_a_plane_from_boundary_faces(double distance_tolerance,
     points.push_back({Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.5, 0.3}}});
   double distance = 0, angle = 0;
   for (const Point_source& p : points) {
-    const auto source = position(mesh, p);
+    const auto source = surface_point_position(mesh, p);
     const auto map = method.compute(p, expmap::Patch::geodesic_radius(0.3));
     BOOST_TEST(map.size() > 10u);  // 17 in a corner of the grid
     for (std::size_t i = 0; i < map.size(); ++i) {
@@ -447,7 +442,7 @@ void check_path_onto_a_vertex(const char* name, const expmap_analytic::Triangle_
     double worst = 0;
     for (std::size_t i = 1; i < path.size(); ++i) {
       const auto map = within(method.compute(path[i], patch));
-      const auto x = position(mesh, path[i - 1]), y = position(mesh, path[i]);
+      const auto x = surface_point_position(mesh, path[i - 1]), y = surface_point_position(mesh, path[i]);
       const double moved = std::hypot(std::hypot(x[0] - y[0], x[1] - y[1]), x[2] - y[2]);
       worst = std::max(worst, largest_uv_move(previous, map) / moved);
       previous = map;
@@ -490,7 +485,7 @@ void check_boundary_faces_as_accurate_as_their_corners(const char* name) {
     if (!on_boundary || f.idx() % 7 != 0) continue;
     const Point_source p{f, {{0.2, 0.3, 0.5}}};
     const auto map = method.compute(p, patch, query);
-    const auto e = errors(map, position(mesh, p));
+    const auto e = errors(map, surface_point_position(mesh, p));
     std::array<double, 2> corners{{0, 0}};
     for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
       const auto x = mesh.point(v);

@@ -31,13 +31,30 @@ BOOST_AUTO_TEST_CASE(locator_finds_the_face_and_coordinates) {
   const expmap::Surface_point_locator<Surface_mesh> locator(mesh);
   for (std::size_t f : random_sources(mesh.number_of_faces(), 5, 3)) {
     const Point_source p{Face(static_cast<Surface_mesh::size_type>(f)), {{0.2, 0.3, 0.5}}};
-    const Point_source found = locator.locate(position(mesh, p));
+    const Point_source found = locator.locate(surface_point_position(mesh, p));
     BOOST_TEST(found.face == p.face);
     for (int k = 0; k < 3; ++k) BOOST_TEST(std::abs(found.barycentric[k] - p.barycentric[k]) < 1e-12);
   }
   const Point_source once = expmap::locate_surface_point(mesh, {{0, 0, 2}});
-  const auto x = position(mesh, once);
+  const auto x = surface_point_position(mesh, once);
   BOOST_TEST(x[2] > 0.99);  // nearest the north pole
+}
+
+// The library's position of a surface point is CGAL's construct_point of
+// the same face location (the corner order both use).
+BOOST_AUTO_TEST_CASE(position_is_cgals_construct_point) {
+  const auto mesh = to_mesh<Surface_mesh>(icosphere(2));
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> weight(0.0, 1.0);
+  for (std::size_t f : random_sources(mesh.number_of_faces(), 20, 5)) {
+    const double a = weight(random), b = weight(random) * (1 - a);
+    const Point_source p{Face(static_cast<Surface_mesh::size_type>(f)), {{a, b, 1 - a - b}}};
+    const CGAL::Polygon_mesh_processing::Face_location<Surface_mesh, double> location{
+        p.face, {{a, b, 1 - a - b}}};
+    const auto expected = CGAL::Polygon_mesh_processing::construct_point(location, mesh);
+    const auto x = surface_point_position(mesh, p);
+    for (int d = 0; d < 3; ++d) BOOST_TEST(std::abs(x[d] - expected[d]) < 1e-15);
+  }
 }
 
 // Points with a coordinate that is not finite, or so far away that the
@@ -72,7 +89,7 @@ BOOST_AUTO_TEST_CASE(locator_refuses_points_it_cannot_locate) {
   BOOST_TEST(refused({{box.xmax() + 1.01 * bound, 0, 0}}, "too far from the mesh"));
   // Within it, the nearest point far out along +x is a point of largest x.
   const Point_source near = locator.locate({{box.xmax() + 0.99 * bound, 0, 0}});
-  BOOST_TEST(position(mesh, near)[0] > box.xmax() - 1e-6 * size);
+  BOOST_TEST(surface_point_position(mesh, near)[0] > box.xmax() - 1e-6 * size);
 }
 
 // A mesh without faces has no point to locate.

@@ -5,6 +5,7 @@
 #include <expmap/Errors.h>
 #include <expmap/IO/Input_faces.h>
 #include <expmap/IO/read_triangle_mesh.h>
+#include <expmap/Locate_surface_point.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -22,16 +23,6 @@ namespace {
 using Point = CGAL::Exact_predicates_inexact_constructions_kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using Faces = expmap::IO::Input_faces<Mesh>;
-
-std::array<double, 3> mesh_position(const Mesh& mesh, const expmap::Surface_point<Mesh::Face_index>& p) {
-  const auto h = mesh.halfedge(p.face);
-  const Point corners[3] = {mesh.point(mesh.source(h)), mesh.point(mesh.target(h)),
-                            mesh.point(mesh.target(mesh.next(h)))};
-  std::array<double, 3> x{{0, 0, 0}};
-  for (int k = 0; k < 3; ++k)
-    for (int d = 0; d < 3; ++d) x[d] += p.barycentric[k] * corners[k][d];
-  return x;
-}
 
 }  // namespace
 
@@ -58,7 +49,7 @@ BOOST_AUTO_TEST_CASE(points_of_input_faces_survive_reading) {
   for (std::size_t j = 0; j + 1 < faces.size(); ++j) {
     BOOST_TEST_CONTEXT("face " << j) {
       const auto p = input.surface_point({j, w});
-      const std::array<double, 3> x = mesh_position(mesh, p);
+      const std::array<double, 3> x = expmap::surface_point_position(mesh, p);
       for (int d = 0; d < 3; ++d) {
         double expected = 0;
         for (int k = 0; k < 3; ++k) expected += w[k] * points[faces[j][k]][d];

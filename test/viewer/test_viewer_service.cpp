@@ -208,6 +208,15 @@ BOOST_AUTO_TEST_CASE(methods_are_checked_by_name) {
   BOOST_TEST(service.cache().status().empty());
 }
 
+// The page offers the library's methods, by the library's names, in its order.
+BOOST_AUTO_TEST_CASE(methods_are_the_librarys) {
+  std::vector<std::string> names;
+  for (const auto& m : expmap::Option_names<expmap::Map_method>::values) names.push_back(m.name);
+  std::vector<std::string> offered;
+  for (const Method_info& m : viewer_methods()) offered.push_back(m.name);
+  BOOST_TEST(offered == names, boost::test_tools::per_element());
+}
+
 // Every method maps from a point inside a face: the located point is the
 // one asked for, no vertex is at it, and the distances are the plane's.
 BOOST_AUTO_TEST_CASE(every_method_maps_from_a_point) {

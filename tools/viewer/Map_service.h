@@ -111,7 +111,7 @@ class Map_service {
                                                  : expmap::Patch::geodesic_radius(*request.radius);
     const auto start = std::chrono::steady_clock::now();
     r.source = m_locator.locate(request.point);
-    r.position = expmap_cli::surface_point_position(m_mesh, r.source.face, r.source.barycentric);
+    r.position = expmap::surface_point_position(m_mesh, r.source);
     check_size(*info, request, patch, r);
     const auto located = std::chrono::steady_clock::now();
 

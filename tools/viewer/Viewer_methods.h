@@ -12,6 +12,7 @@
 #include <expmap/Geodesic_polar_coordinates.h>
 #include <expmap/Heat_exponential_map.h>
 #include <expmap/Local_map.h>
+#include <expmap/Option_names.h>
 #include <expmap/Patch.h>
 #include <expmap/Precomputation_progress.h>
 #include <expmap/Surface_point.h>
@@ -80,7 +81,7 @@ class Viewer_method_model final : public Viewer_method {
 
 /// One row of the viewer's method table.
 struct Method_info {
-  const char* name;   ///< as in the URL and the API: heat, dem, dgpc, exact
+  const char* name;   ///< as in the URL and the API: the library's (expmap/Option_names.h)
   const char* label;  ///< for the page
   bool takes_time_factor;  ///< heat's m
   /// The most patch vertices one request may ask for (doc/viewer.md).
@@ -128,19 +129,25 @@ inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_fa
   return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
 }
 template <class Method>
-constexpr Method_info row(const char* name, const char* label, std::size_t max_patch_vertices,
-                          std::size_t max_region_faces = 0) {
-  return {name, label, false, max_patch_vertices, max_region_faces, make_method<Method>};
+Method_info row(expmap::Map_method id, const char* label, std::size_t max_patch_vertices,
+                std::size_t max_region_faces = 0) {
+  return {expmap::named_value(id).name, label, false, max_patch_vertices, max_region_faces,
+          make_method<Method>};
 }
 }  // namespace internal
 
-/// The methods, in the order the page lists them.
+/// The methods, in the order the page lists them: the library's.
 inline const std::vector<Method_info>& viewer_methods() {
+  using expmap::Map_method;
   static const std::vector<Method_info> table{
-      {"heat", "heat method", true, max_fast_patch_vertices, 0, internal::make_heat},
-      internal::row<expmap::Discrete_exponential_map<Mesh>>("dem", "DEM", max_fast_patch_vertices),
-      internal::row<expmap::Geodesic_polar_coordinates<Mesh>>("dgpc", "DGPC", max_fast_patch_vertices),
-      internal::row<expmap::Exact_exponential_map<Mesh>>("exact", "exact", max_exact_patch_vertices,
+      {expmap::named_value(Map_method::heat).name, "heat method", true, max_fast_patch_vertices,
+       0, internal::make_heat},
+      internal::row<expmap::Discrete_exponential_map<Mesh>>(Map_method::dem, "DEM",
+                                                            max_fast_patch_vertices),
+      internal::row<expmap::Geodesic_polar_coordinates<Mesh>>(Map_method::dgpc, "DGPC",
+                                                              max_fast_patch_vertices),
+      internal::row<expmap::Exact_exponential_map<Mesh>>(Map_method::exact, "exact",
+                                                         max_exact_patch_vertices,
                                                          max_exact_region_faces),
   };
   return table;
