@@ -31,9 +31,9 @@ enum class Angle_estimator {
   /// vertices, each moved by up to 0.35 mean edge lengths, without the
   /// near-source blend, its mean angle error is 5.8e-3 rad against
   /// `log_heat_gradient`'s 1.7e-2 (test/heat_map/test_angle_estimators.cpp);
-  /// real meshes fold more with it than with the default
-  /// (doc/decisions.md). Falls back to `log_heat_gradient` at sources with
-  /// fewer than five neighbours.
+  /// on real meshes it gave more patches with fold-overs (doc/decisions.md).
+  /// Falls back to `log_heat_gradient` at sources with fewer than five
+  /// neighbours.
   log_heat_quadratic_fit,
   /// The gradient of a least-squares quadratic fitted to the heat itself
   /// (not its logarithm) on the two-ring of the source in the triangulation
