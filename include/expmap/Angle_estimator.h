@@ -17,17 +17,19 @@ enum class Angle_estimator {
   /// The same gradient of the logarithm of the heat. Same direction in the
   /// continuum, but the log of the heat kernel is nearly linear in the
   /// distance, so the piecewise linear gradient over an irregular one-ring
-  /// is less biased: on the unit icosphere (40,962 vertices) it halves the
-  /// worst mean angle error at m = 1 and m = 10 (doc/time_factor.md).
+  /// picks up less bias from the kernel's curvature.
   /// Falls back to `heat_gradient` where some heat value is not positive.
   log_heat_gradient,
   /// The gradient of the logarithm of the heat from a quadratic fitted by
   /// least squares on the star of the source, instead of the area-weighted
   /// piecewise linear gradient: exact for quadratics, so an irregular
-  /// one-ring does not bias the direction. Up to 1.9x smaller angle errors
-  /// on jittered Delaunay height fields and 2.7x on a jittered sphere, but
-  /// more fold-overs on real meshes (doc/decisions.md). Falls back to `log_heat_gradient` at
-  /// sources with fewer than five neighbours.
+  /// one-ring does not bias the direction. On a unit sphere of 10,242
+  /// vertices, each moved by up to 0.35 mean edge lengths, without the
+  /// near-source blend, its mean angle error is 5.8e-3 rad against
+  /// `log_heat_gradient`'s 1.7e-2 (test/heat_map/test_angle_estimators.cpp);
+  /// on real meshes it gave more patches with fold-overs (doc/decisions.md).
+  /// Falls back to `log_heat_gradient` at sources with fewer than five
+  /// neighbours.
   log_heat_quadratic_fit,
   /// The gradient of a least-squares quadratic fitted to the heat itself
   /// (not its logarithm) on the two-ring of the source in the triangulation
@@ -35,12 +37,13 @@ enum class Angle_estimator {
   /// removed (`internal::remove_cubic_leak`: the heat from a far vertex is
   /// nearly the exponential of a known quadratic). Linear in the heat, so by
   /// symmetry two right-hand sides give it for every patch vertex at once,
-  /// where the logarithmic estimators solve one per star vertex; measured on
-  /// regular and jittered spheres, its angles are as accurate as
-  /// `log_heat_quadratic_fit`'s. Falls back to `heat_gradient` at sources
-  /// with fewer than five neighbours, and to `log_heat_quadratic_fit` at
-  /// time factors below 4, where the heat varies too fast across the
-  /// two-ring (`Heat_exponential_map::angle_estimator()` tells). The default.
+  /// where the logarithmic estimators solve one per star vertex. With the
+  /// near-source blend (the defaults) its mean angle error on the jittered
+  /// sphere above is 1.5e-3 rad (test/heat_map/test_angle_estimators.cpp).
+  /// Falls back to `heat_gradient` at sources with fewer than five
+  /// neighbours, and to `log_heat_quadratic_fit` at time factors below 4,
+  /// where the heat varies too fast across the two-ring
+  /// (`Heat_exponential_map::angle_estimator()` tells). The default.
   heat_quadratic_fit
 };
 

@@ -114,8 +114,10 @@ class Heat_exponential_map
   ///         isolated, the patch names vertices out of range or outside
   ///         the source's component, or a setting of `query` is out of
   ///         range.
-  /// \throws Computation_error if heat underflows inside the patch (choose a
-  ///         larger time factor or a smaller patch).
+  /// \throws Computation_error with `fallback = Heat_fallback::none`, if
+  ///         the heat underflows or is not positive inside the patch
+  ///         (choose a larger time factor or a smaller patch); by default
+  ///         the geodesic front maps the source instead.
   Result compute_by_index(std::size_t source, const Patch& patch,
                           const Query& query = {}) const {
     const Query& checked_query = checked(query);

@@ -85,8 +85,8 @@ struct Heat_options {
   Vertex_area vertex_area = Vertex_area::mixed_voronoi;
   /// How the Poisson system is made definite.
   Poisson_regularization regularization = Poisson_regularization::pinned_vertex;
-  /// Single precision halves the factors' memory and speeds queries on
-  /// large meshes, moving the maps by about 1e-6 of the radius.
+  /// Single precision about halves the factors' memory and speeds queries
+  /// on large meshes, moving the distances by about 2e-7 of the radius.
   Factor_precision factor_precision = Factor_precision::double_precision;
   /// Truncation of the low-rank rows below the Poisson factor's large
   /// separators (meshes above about 100k vertices): fewer entries read per

@@ -32,7 +32,7 @@ namespace heat {
 
 /// The near-source blend is stretched by up to this factor where the
 /// surface is flat at its scale (measured on the accuracy study,
-/// doc/results.md: 3h-9h instead of 2h-6h lowers the mean angle error on
+/// doc/decisions.md: 3h-9h instead of 2h-6h lowers the mean angle error on
 /// every surface; 4h-12h raises the regular saddle's).
 constexpr double max_near_source_widening = 1.5;
 /// The normal's turn (rad) across the blend's end at which the blend keeps
