@@ -105,6 +105,7 @@ using namespace expmap_bench;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
 using Heat = expmap::Heat_exponential_map<Mesh>;
+using Inspection = expmap::internal::heat::Factor_inspection;
 using Dem = expmap::Discrete_exponential_map<Mesh>;
 using Dgpc = expmap::Geodesic_polar_coordinates<Mesh>;
 using Exact = expmap::Exact_exponential_map<Mesh>;
@@ -379,16 +380,16 @@ class Benchmark {
       heat = std::make_unique<Heat>(mesh, m_heat_options);
       st.precompute_s = watch.seconds();
       st.peak_rss_mb = peak_rss_mib();
-      st.heat_tree_height = heat->heat_tree_height();
-      st.poisson_tree_height = heat->poisson_tree_height();
-      st.factor_nonzeros = static_cast<double>(heat->factor_nonzeros());
+      st.heat_tree_height = Inspection::heat_tree_height(*heat);
+      st.poisson_tree_height = Inspection::poisson_tree_height(*heat);
+      st.factor_nonzeros = static_cast<double>(Inspection::factor_entries(*heat));
       std::cout << "heat precompute " << fixed(st.precompute_s, 2) << " s, peak RSS "
                 << fixed(st.peak_rss_mb, 1) << " MiB (" << fixed(st.mesh_rss_mb, 1)
                 << " MiB before precompute" << (st.hwm_reset ? "" : "; VmHWM NOT reset")
                 << "), tree heights heat " << st.heat_tree_height << " / Poisson "
-                << st.poisson_tree_height << ", factor entries " << heat->factor_nonzeros()
+                << st.poisson_tree_height << ", factor entries " << Inspection::factor_entries(*heat)
                 << ", Poisson supernodes with rows below in low-rank form "
-                << heat->poisson_compressed_supernodes() << ", t = " << fmt(heat->time_step(), 4)
+                << Inspection::poisson_compressed_supernodes(*heat) << ", t = " << fmt(heat->time_step(), 4)
                 << "\n";
     }
     m_mesh_statistics.push_back(st);

@@ -68,8 +68,8 @@ inline bool is_linear_in_heat(Angle_estimator estimator) {
 /// `end` it turns smoothly (a cubic smoothstep in the distance) into the
 /// heat's direction. `end = 0` gives the paper's pure heat angles. A query
 /// scales `begin` and `end` so that the blend ends where the surface normal
-/// has turned by 1 rad (`Heat_exponential_map::blend_normal_turn`), by at
-/// most 1.5x (`Heat_exponential_map::max_near_source_widening`): chords are
+/// has turned by 1 rad, by at most 1.5x
+/// (`Heat_exponential_map::near_source_blend_at()` gives a source's): chords are
 /// good directions where the surface is flat at the blend's scale, and
 /// fold triangles over where it bends (a coarse, curved one-ring).
 /// The chord's direction is read in the source's intrinsic angles: a

@@ -24,6 +24,7 @@
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Workspace_pool.h>
+#include <expmap/internal/heat/Factor_inspection.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_query.h>
 #include <expmap/internal/heat/Map_choice.h>
@@ -135,8 +136,8 @@ class Heat_exponential_map
   /// The near-source blend a query with settings `query` from the vertex
   /// of index `source` uses, in mean edge lengths like
   /// `Heat_query_options::near_source_blend`: the query's, scaled so that
-  /// the blend ends where the surface normal has turned by
-  /// `blend_normal_turn` (by at most `max_near_source_widening`).
+  /// the blend ends where the surface normal has turned by 1 rad (by at
+  /// most 1.5x; see `Near_source_blend`).
   /// \throws Invalid_input if the index is out of range, the source is
   ///         isolated or a setting of `query` is out of range.
   Near_source_blend near_source_blend_at(std::size_t source, const Query& query = {}) const {
@@ -149,21 +150,6 @@ class Heat_exponential_map
     const double h = m_indexed.arrays.mean_edge_length;
     return {zone.begin / h, zone.end / h};
   }
-  /// Elimination-tree height of the heat factor (columns on its longest path).
-  int heat_tree_height() const { return m_factors.heat.tree_height(); }
-  /// Elimination-tree height of the Poisson factor.
-  int poisson_tree_height() const { return m_factors.poisson.tree_height(); }
-  /// Supernodes of the Poisson factor whose rows below are kept in low-rank
-  /// form (`Heat_options::poisson_compression_tolerance`).
-  std::size_t poisson_compressed_supernodes() const {
-    return m_factors.poisson.number_of_compressed_supernodes();
-  }
-  /// Stored entries of all factors, in the dense supernodal form the
-  /// queries traverse.
-  std::size_t factor_nonzeros() const {
-    return m_factors.heat.number_of_entries() + m_factors.poisson.number_of_entries() +
-           m_factors.boundary_heat.number_of_entries();
-  }
   /// Bytes held by the factors' entries, the bulk of the object's memory
   /// between queries: 8 per entry, 4 per entry kept in single precision.
   std::size_t factor_bytes() const {
@@ -174,27 +160,17 @@ class Heat_exponential_map
   /// The settings the object was built with.
   const Heat_options& options() const { return m_options; }
   /// The estimator a query asking for `requested` uses: `requested`, except
-  /// that `heat_quadratic_fit` at a time factor below
-  /// `min_time_factor_of_two_ring_fit` becomes `log_heat_quadratic_fit`.
+  /// that `heat_quadratic_fit` at a time factor below 4 becomes
+  /// `log_heat_quadratic_fit`: there the heat falls by more than a factor e
+  /// across the two-ring, beyond what a quadratic of it models.
   Angle_estimator angle_estimator(
       Angle_estimator requested = Heat_query_options().angle_estimator) const {
     return internal::heat::angle_estimator_at(requested, m_options.time_factor);
   }
 
-  /// Below this time factor the heat falls by more than a factor e across
-  /// the two-ring, beyond what `heat_quadratic_fit` models.
-  static constexpr double min_time_factor_of_two_ring_fit =
-      internal::heat::min_time_factor_of_two_ring_fit;
-  /// The near-source blend is stretched by up to this factor where the
-  /// surface is flat at its scale.
-  static constexpr double max_near_source_widening = internal::heat::max_near_source_widening;
-  /// The normal's turn (rad) across the blend's end at which the blend
-  /// keeps its nominal width: wider where the surface is flatter, narrower
-  /// where it bends more.
-  static constexpr double blend_normal_turn = internal::heat::blend_normal_turn;
-
  private:
   friend Front;  // calls compute_at_point()
+  friend internal::heat::Factor_inspection;  // the benchmarks' view of the factors
 
   /// Polar coordinates around a point of a face that is no vertex (see
   /// `compute(const Surface_point&, ...)`): its heat is its corners'

@@ -606,10 +606,10 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_widens_where_the_surface_is_flat) {
   double chord_error = 0, beyond_error = 0;
   for (std::size_t i = 1; i < map.size(); ++i) {
     const double error = plane_angle_error(soup, 0, map, i);
-    if (map.distance[i] > 1.05 * begin && map.distance[i] < 0.95 * Heat::max_near_source_widening * begin) {
+    if (map.distance[i] > 1.05 * begin && map.distance[i] < 0.95 * expmap::internal::heat::max_near_source_widening * begin) {
       chord_error = std::max(chord_error, error);
       ++checked;
-    } else if (map.distance[i] > 1.1 * Heat::max_near_source_widening * defaults.near_source_blend.end * h) {
+    } else if (map.distance[i] > 1.1 * expmap::internal::heat::max_near_source_widening * defaults.near_source_blend.end * h) {
       beyond_error = std::max(beyond_error, error);
       ++beyond;
     }
@@ -647,8 +647,8 @@ BOOST_AUTO_TEST_CASE(the_near_source_blend_narrows_where_the_surface_bends) {
   const double turn =
       expmap::internal::normal_turn_rate(arrays, s, expmap::internal::vertex_normal(arrays, s)) *
       nominal_end;
-  BOOST_TEST_REQUIRE(turn > 1.3 * Heat::blend_normal_turn);
-  const double end = nominal_end * Heat::blend_normal_turn / turn;
+  BOOST_TEST_REQUIRE(turn > 1.3 * expmap::internal::heat::blend_normal_turn);
+  const double end = nominal_end * expmap::internal::heat::blend_normal_turn / turn;
   BOOST_TEST(blended.near_source_blend_at(s).end * h == end, boost::test_tools::tolerance(1e-12));
   BOOST_TEST(blended.near_source_blend_at(s).begin * h == end / 3,
              boost::test_tools::tolerance(1e-12));
