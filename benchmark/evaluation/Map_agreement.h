@@ -6,7 +6,8 @@
 /// \file Map_agreement.h
 /// How well a local map agrees with a reference map of the same source
 /// (the exact polyhedral one), vertex by vertex: its fold-overs, its angle
-/// error after the best rotation, its relative distance error.
+/// error after the best rotation, its distance error (absolute and
+/// relative).
 ///
 /// Only a rotation is removed, never a reflection: the methods share one
 /// tangent frame and sense of angle, so a mirrored map is wrong, and its
@@ -39,6 +40,10 @@ struct Map_agreement {
   double rotation = 0;  ///< the rotation removed
   /// Mean |r - r_ref| / r_ref over the common vertices (NaN as above).
   double relative_distance_error = std::numeric_limits<double>::quiet_NaN();
+  /// Mean |r - r_ref| over the common vertices (NaN as above), in the
+  /// mesh's units: divided by the patch radius it weighs every vertex alike,
+  /// where the relative error above is largest next to the source.
+  double distance_error = std::numeric_limits<double>::quiet_NaN();
 
   /// flipped / triangles (0 for a patch without triangles).
   double flipped_fraction() const {
@@ -56,7 +61,7 @@ void compare_with_reference(const expmap::Local_map<VertexDescriptor>& map,
   std::unordered_map<std::size_t, std::size_t> in_reference;
   in_reference.reserve(reference.size());
   for (std::size_t i = 0; i < reference.size(); ++i) in_reference.emplace(reference.indices[i], i);
-  std::vector<double> computed, exact, relative_dr;
+  std::vector<double> computed, exact, dr, relative_dr;
   for (std::size_t i = 0; i < map.size(); ++i) {
     const auto it = in_reference.find(map.indices[i]);
     if (it == in_reference.end()) continue;
@@ -64,12 +69,14 @@ void compare_with_reference(const expmap::Local_map<VertexDescriptor>& map,
     if (!(r_ref > 0)) continue;  // the source: its angle is undefined
     computed.push_back(map.angle[i]);
     exact.push_back(reference.angle[it->second]);
-    relative_dr.push_back(std::abs(map.distance[i] - r_ref) / r_ref);
+    dr.push_back(std::abs(map.distance[i] - r_ref));
+    relative_dr.push_back(dr.back() / r_ref);
   }
   agreement.common_vertices = computed.size();
   if (computed.empty()) return;
   agreement.angle_error = mean(angle_errors_up_to_rotation(computed, exact, agreement.rotation));
   agreement.relative_distance_error = mean(relative_dr);
+  agreement.distance_error = mean(dr);
 }
 
 /// The fold-overs of `map`, a map of `tm` (no reference to compare with).

@@ -1,7 +1,10 @@
 // The localized query integrates the distance on a region around the patch
 // only; against the whole-mesh heat distances (the same method with the
 // Poisson problem solved on the whole mesh) the cut-off error must stay
-// small: mean below 1% of the patch radius in the inner 90% of the patch.
+// small. Over seeded random sources of real meshes its percentiles are gated
+// at today's values plus a margin; on hand-picked sources of special cases
+// (widened candidates, radius patches, a margin retry, analytic meshes) its
+// mean in the inner 90% of the patch stays below 1% of the patch radius.
 #include <expmap/Heat_exponential_map.h>
 
 #include <boost/test/unit_test.hpp>
@@ -11,7 +14,9 @@
 #include <random>
 #include <unordered_map>
 #include <utility>
+#include <vector>
 
+#include "../../benchmark/Sample_statistics.h"
 #include "Analytic_surfaces.h"
 #include "test_support.h"
 
@@ -24,16 +29,29 @@ struct Cutoff_error {
   double mean_inner = 0, max_inner = 0, mean_all = 0, max_all = 0;  // relative to the radius
 };
 
-// The heat's own distances, local and whole (the geodesic front's fallback
-// would replace either where its map folds or meets the boundary).
+// The heat's own distances (the geodesic front's fallback would replace
+// them where its map folds or meets the boundary).
+expmap::Heat_query_options heat_only() {
+  expmap::Heat_query_options query;
+  query.fallback = expmap::Heat_fallback::none;
+  return query;
+}
+
+// The whole-mesh heat distances of `source`, by vertex index.
 template <class Heat>
-Cutoff_error cutoff_error(const Heat& heat, std::size_t source, const expmap::Patch& patch) {
-  expmap::Heat_query_options heat_only;
-  heat_only.fallback = expmap::Heat_fallback::none;
-  const auto whole = heat.compute_by_index(source, expmap::Patch::fraction(1.0), heat_only);
+std::unordered_map<std::size_t, double> whole_mesh_distances(const Heat& heat,
+                                                             std::size_t source) {
+  const auto whole = heat.compute_by_index(source, expmap::Patch::fraction(1.0), heat_only());
   std::unordered_map<std::size_t, double> reference;
   for (std::size_t i = 0; i < whole.size(); ++i) reference[whole.indices[i]] = whole.distance[i];
-  const auto local = heat.compute_by_index(source, patch, heat_only);
+  return reference;
+}
+
+// The localized query's distances against the whole-mesh ones.
+template <class Heat>
+Cutoff_error cutoff_error(const Heat& heat, std::size_t source, const expmap::Patch& patch,
+                          const std::unordered_map<std::size_t, double>& reference) {
+  const auto local = heat.compute_by_index(source, patch, heat_only());
   const double radius = local.distance.back();
   const std::size_t inner = static_cast<std::size_t>(0.9 * static_cast<double>(local.size()));
   Cutoff_error e;
@@ -52,6 +70,11 @@ Cutoff_error cutoff_error(const Heat& heat, std::size_t source, const expmap::Pa
 }
 
 template <class Heat>
+Cutoff_error cutoff_error(const Heat& heat, std::size_t source, const expmap::Patch& patch) {
+  return cutoff_error(heat, source, patch, whole_mesh_distances(heat, source));
+}
+
+template <class Heat>
 void check_cutoff(const Heat& heat, const char* name, std::initializer_list<std::size_t> sources,
                   std::initializer_list<double> fractions = {0.05, 0.25}) {
   for (double fraction : fractions)
@@ -63,6 +86,74 @@ void check_cutoff(const Heat& heat, const char* name, std::initializer_list<std:
                               << e.max_all << " (relative to the radius)");
       BOOST_TEST(e.mean_inner < 0.01);
     }
+}
+
+// Seeded random sources: `count` vertices from std::mt19937(seed)'s raw
+// output modulo the vertex count (portable, unlike the standard library's
+// distributions; the bias is below 1e-5 for these meshes).
+std::vector<std::size_t> random_sources(std::size_t vertex_count, std::size_t count,
+                                        unsigned seed) {
+  std::mt19937 rng(seed);
+  std::vector<std::size_t> sources;
+  while (sources.size() < count) sources.push_back(static_cast<std::size_t>(rng()) % vertex_count);
+  return sources;
+}
+
+// Today's percentiles over the sources of one patch size's cut-off error:
+// of the mean in the inner 90% of the patch (the measure the hand-picked
+// checks bound) and of the largest over the whole patch, both relative to
+// the patch radius.
+struct Cutoff_today {
+  double fraction;
+  double mean_inner_median, mean_inner_p90, mean_inner_max;
+  double max_all_median, max_all_p90;
+};
+
+// The limit of a percentile: today's value plus a margin of 25% and 2e-4 of
+// the radius.
+double cutoff_limit(double today) { return 1.25 * today + 2e-4; }
+
+// The heat with its defaults on `mesh_name`, the cut-off errors of
+// `sources_count` random sources (seed 1) at each of `today`'s patch
+// fractions, one whole-mesh solve per source; the percentiles checked
+// against today's plus the margin.
+void check_cutoff_percentiles(const char* mesh_name, std::size_t sources_count,
+                              const std::vector<Cutoff_today>& today) {
+  const Surface_mesh mesh = load_mesh<Surface_mesh>(mesh_name);
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  const std::vector<std::size_t> sources = random_sources(num_vertices(mesh), sources_count, 1);
+  std::vector<std::vector<double>> mean_inner(today.size()), max_all(today.size());
+  for (std::size_t s : sources) {
+    const auto reference = whole_mesh_distances(heat, s);
+    for (std::size_t k = 0; k < today.size(); ++k) {
+      const Cutoff_error e =
+          cutoff_error(heat, s, expmap::Patch::fraction(today[k].fraction), reference);
+      mean_inner[k].push_back(e.mean_inner);
+      max_all[k].push_back(e.max_all);
+    }
+  }
+  using expmap_bench::median;
+  using expmap_bench::percentile;
+  for (std::size_t k = 0; k < today.size(); ++k) {
+    const Cutoff_today& t = today[k];
+    const std::vector<double>& m = mean_inner[k];
+    const std::vector<double>& x = max_all[k];
+    const auto above_one_percent =
+        std::count_if(m.begin(), m.end(), [](double e) { return e >= 0.01; });
+    BOOST_TEST_MESSAGE(mesh_name << ", " << t.fraction * 100 << "% patches, " << sources.size()
+                                 << " random sources: inner 90% mean median " << median(m)
+                                 << ", p90 " << percentile(m, 90) << ", max " << percentile(m, 100)
+                                 << " (" << above_one_percent
+                                 << " at 1% or more); whole patch max median " << median(x)
+                                 << ", p90 " << percentile(x, 90) << " (relative to the radius)");
+    BOOST_TEST_CONTEXT(mesh_name << ", " << t.fraction * 100 << "% patches") {
+      BOOST_TEST(median(m) <= cutoff_limit(t.mean_inner_median));
+      BOOST_TEST(percentile(m, 90) <= cutoff_limit(t.mean_inner_p90));
+      BOOST_TEST(percentile(m, 100) <= cutoff_limit(t.mean_inner_max));
+      BOOST_TEST(median(x) <= cutoff_limit(t.max_all_median));
+      BOOST_TEST(percentile(x, 90) <= cutoff_limit(t.max_all_p90));
+    }
+  }
 }
 
 }  // namespace
@@ -93,10 +184,27 @@ BOOST_AUTO_TEST_CASE(single_precision_factors_change_distances_by_round_off) {
   BOOST_TEST(largest > 0);  // the factor was rounded
 }
 
-BOOST_AUTO_TEST_CASE(armadillo_cutoff_error) {
-  const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
-  expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
-  check_cutoff(heat, "armadillo", {2000, 9000, 15000});
+// The cut-off error at 100 random sources (std::mt19937 seed 1) of three
+// meshes, as percentiles over the sources, at 1%, 5% and 25% patches. The
+// numbers are today's (2026-11-28, Release build, GCC 12, x86-64): the
+// median, 90th percentile and largest of the inner 90% mean, then the
+// median and 90th percentile of the whole patch's largest error, relative
+// to the patch radius; cutoff_limit adds the margin. At 1% the error is
+// largest: on armadillo 46 of the 100 sources reach 1% of the radius (22 on
+// bunny00, 37 on refined_elephant); at 5% and 25% none does.
+BOOST_AUTO_TEST_CASE(cutoff_error_percentiles_over_random_sources) {
+  check_cutoff_percentiles("armadillo.off", 100,
+                           {{0.01, 0.00938, 0.0209, 0.0279, 0.0316, 0.0630},
+                            {0.05, 0.00313, 0.00717, 0.00872, 0.0150, 0.0271},
+                            {0.25, 0.00109, 0.00178, 0.00216, 0.00652, 0.0101}});
+  check_cutoff_percentiles("bunny00.off", 100,
+                           {{0.01, 0.00628, 0.0135, 0.0282, 0.0224, 0.0493},
+                            {0.05, 0.00325, 0.00632, 0.00964, 0.0129, 0.0231},
+                            {0.25, 0.000827, 0.00176, 0.00264, 0.00401, 0.00698}});
+  check_cutoff_percentiles("refined_elephant.off", 100,
+                           {{0.01, 0.00842, 0.0166, 0.0307, 0.0269, 0.0494},
+                            {0.05, 0.00208, 0.00565, 0.00875, 0.00935, 0.0222},
+                            {0.25, 0.000303, 0.000844, 0.00224, 0.00248, 0.00584}});
 }
 
 // With the input mesh's cotan weights the heat matrix is not an M-matrix
@@ -155,7 +263,8 @@ BOOST_AUTO_TEST_CASE(refined_elephant_radius_patches_down_to_a_heat) {
 // region, manual section 2, step 5), and the query retries on a region
 // twice as large. The retry is not what keeps a cut-off error below 1%:
 // of 150 random sources at 1% on this mesh, 60 exceed it when 45 of them
-// retry and 63 when one does (measured with expmap-bench).
+// retry and 63 when one does (measured with expmap-bench; the percentiles
+// over random sources are gated in cutoff_error_percentiles_over_random_sources).
 // A retry continues the first attempt's heat solve, so its map is the one a
 // first attempt on the doubled region computes (`region_growth` 4, whose
 // wider margin, 1.7 radii, source 2's doubled region holds too).
