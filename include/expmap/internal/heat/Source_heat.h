@@ -48,7 +48,7 @@ inline bool prunes(const Context& c, int s, std::size_t count) {
 // small only prunes less, one too large costs a second solve. On
 // elephant_loop2 at 0.1-2% (30 sources) a decay factor of 1 reads
 // 0.94-0.97x the factor entries, but 1.16-1.20x for 4 sources at 2%; no
-// scale-down 0.96-1.00x, but it took 1.2-1.5x the time.
+// scale-down 0.96-1.00x, its time within the noise (0.72-1.54x in 4 runs).
 constexpr double heat_decay_overestimate = 2.0;
 constexpr double smallest_heat_safety = 1e-3;
 
