@@ -107,7 +107,7 @@ class Point_sources {
                                   : "source " + std::to_string(points.size()) + ": ";
         throw expmap::Invalid_input(what + ": " + which + e.what());
       }
-      const std::array<double, 3> y = position(points.back());
+      const std::array<double, 3> y = expmap::surface_point_position(m_mesh, points.back());
       const double d = std::sqrt(CGAL::square(x[0] - y[0]) + CGAL::square(x[1] - y[1]) +
                                  CGAL::square(x[2] - y[2]));
       if (d > 1e-6 * diagonal) {

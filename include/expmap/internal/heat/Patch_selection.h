@@ -97,9 +97,13 @@ inline Region_end region_end(const Context& c, double horizon, const Workspace& 
 
 // The factor in distance by which the patch must stay clear of the
 // region's edge: a geodesic disk with `region_growth` times the patch's
-// vertices has sqrt(region_growth) times its radius.
+// vertices has sqrt(region_growth) times its radius; the margin is this
+// share of it (1: 46-84% of queries retry; less: a larger cut-off
+// error, doc/decisions.md).
+constexpr double patch_margin_share = 0.85;
+
 inline double patch_margin(const Context& c) {
-  return std::max(1.0, 0.85 * std::sqrt(c.query.region_growth));
+  return std::max(1.0, patch_margin_share * std::sqrt(c.query.region_growth));
 }
 
 // Whether the patch at region positions `order` is the one asked for: all
