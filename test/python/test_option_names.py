@@ -57,8 +57,9 @@ def cli_values(help_text, flag):
 def python_default(keyword):
     """The default the constructor's docstring marks for `keyword`."""
     doc = expmap.HeatExponentialMap.__init__.__doc__
-    block = doc[doc.index(keyword + ": "):]
-    match = re.search(r"'(\w+)' \(default\)", block)
+    start = re.search(r"^" + keyword + r": a ", doc, re.M)  # its lines, not the signature's
+    assert start, "HeatExponentialMap's docstring does not describe %s" % keyword
+    match = re.search(r"'(\w+)' \(default\)", doc[start.start():])
     return match.group(1)
 
 
