@@ -9,16 +9,16 @@
 
 #include <expmap/Errors.h>
 #include <expmap/Patch.h>
-#include <expmap/internal/Geodesic_ball_submesh.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
-#include <expmap/internal/Point_direction.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Point_source.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Tangent_frame.h>
 #include <expmap/internal/Workspace_pool.h>
+#include <expmap/internal/front/Geodesic_ball_submesh.h>
+#include <expmap/internal/front/Point_direction.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

@@ -9,12 +9,12 @@
 
 #include <expmap/Errors.h>
 #include <expmap/Patch.h>
-#include <expmap/internal/Geodesic_front.h>
 #include <expmap/internal/Local_map_assembly.h>
-#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Mesh_arrays.h>
+#include <expmap/internal/Method_front.h>
 #include <expmap/internal/Query_validation.h>
 #include <expmap/internal/Workspace_pool.h>
+#include <expmap/internal/front/Geodesic_front.h>
 
 #include <CGAL/Default.h>
 

@@ -12,9 +12,9 @@
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
 
-#include <expmap/internal/Cotan_operators.h>
-#include <expmap/internal/Intrinsic_delaunay.h>
-#include <expmap/internal/Triangulation_adjacency.h>
+#include <expmap/internal/operators/Cotan_operators.h>
+#include <expmap/internal/operators/Intrinsic_delaunay.h>
+#include <expmap/internal/operators/Triangulation_adjacency.h>
 
 #include <Eigen/SparseCholesky>
 

@@ -7,7 +7,7 @@
 // with invariants of intrinsic flips (cone angle at every vertex, total
 // area, Euler characteristic).
 
-#include <expmap/internal/Intrinsic_delaunay.h>
+#include <expmap/internal/operators/Intrinsic_delaunay.h>
 
 #include <boost/test/unit_test.hpp>
 

@@ -8,7 +8,7 @@
 // 1/2 (cot c (X . e_ab) + cot b (X . e_ac)), with the cotangents from dot and
 // cross products. Nothing is shared with the stencil but the edge lengths.
 
-#include <expmap/internal/Normalized_gradient_divergence.h>
+#include <expmap/internal/operators/Normalized_gradient_divergence.h>
 
 #include <boost/test/unit_test.hpp>
 

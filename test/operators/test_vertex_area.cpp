@@ -9,7 +9,7 @@
 // barycentric mass does not on irregular triangles; and both share out
 // every triangle's area.
 
-#include <expmap/internal/Cotan_operators.h>
+#include <expmap/internal/operators/Cotan_operators.h>
 
 #include <boost/test/unit_test.hpp>
 

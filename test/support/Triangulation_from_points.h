@@ -6,7 +6,7 @@
 #ifndef EXPMAP_TEST_TRIANGULATION_FROM_POINTS_H
 #define EXPMAP_TEST_TRIANGULATION_FROM_POINTS_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <array>
 #include <cmath>

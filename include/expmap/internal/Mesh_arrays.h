@@ -4,9 +4,9 @@
 #define EXPMAP_INTERNAL_MESH_ARRAYS_H
 
 #include <expmap/Errors.h>
-#include <expmap/internal/Intrinsic_triangulation.h>
-#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/Vector3.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Triangulation_adjacency.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -5,8 +5,8 @@
 
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Tangent_frame.h>
-#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/Vector3.h>
+#include <expmap/internal/operators/Triangulation_adjacency.h>
 
 #include <cmath>
 #include <vector>

@@ -6,8 +6,8 @@
 // Step 3 (manual, section 2): the divergence of the normalized
 // heat gradient X = grad h / |grad h| on the region.
 
-#include <expmap/internal/Normalized_gradient_divergence.h>
 #include <expmap/internal/heat/Query_workspace.h>
+#include <expmap/internal/operators/Normalized_gradient_divergence.h>
 
 #include <algorithm>
 #include <array>

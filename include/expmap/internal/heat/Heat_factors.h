@@ -10,12 +10,12 @@
 #include <expmap/Angle_estimator.h>
 #include <expmap/Errors.h>
 #include <expmap/Heat_options.h>
-#include <expmap/internal/Boundary_loops.h>
-#include <expmap/internal/Cotan_operators.h>
-#include <expmap/internal/Faces_by_smallest_corner.h>
-#include <expmap/internal/Intrinsic_delaunay.h>
 #include <expmap/internal/Mesh_arrays.h>
-#include <expmap/internal/Triangulation_adjacency.h>
+#include <expmap/internal/operators/Boundary_loops.h>
+#include <expmap/internal/operators/Cotan_operators.h>
+#include <expmap/internal/operators/Faces_by_smallest_corner.h>
+#include <expmap/internal/operators/Intrinsic_delaunay.h>
+#include <expmap/internal/operators/Triangulation_adjacency.h>
 #include <expmap/internal/solver/Localized_cholesky_solver.h>
 
 #include <algorithm>

@@ -23,9 +23,9 @@
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Solve_statistics.h>
-#include <expmap/internal/Geodesic_front.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Query_validation.h>
+#include <expmap/internal/front/Geodesic_front.h>
 #include <expmap/internal/heat/Query_workspace.h>
 
 #include <algorithm>

@@ -8,10 +8,10 @@
 // thread (see Workspace_pool).
 
 #include <expmap/Heat_options.h>
-#include <expmap/internal/Geodesic_front.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
+#include <expmap/internal/front/Geodesic_front.h>
 #include <expmap/internal/heat/Heat_factors.h>
 #include <expmap/internal/heat/Heat_source.h>
 #include <expmap/internal/solver/Localized_cholesky_solver.h>

@@ -11,8 +11,8 @@
 #include <expmap/Solve_statistics.h>
 #include <expmap/internal/Star_gradient.h>
 #include <expmap/internal/Tangent_frame.h>
-#include <expmap/internal/Triangulation_adjacency.h>
 #include <expmap/internal/heat/Query_workspace.h>
+#include <expmap/internal/operators/Triangulation_adjacency.h>
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_INTRINSIC_DELAUNAY_H
-#define EXPMAP_INTERNAL_INTRINSIC_DELAUNAY_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_INTRINSIC_DELAUNAY_H
+#define EXPMAP_INTERNAL_OPERATORS_INTRINSIC_DELAUNAY_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <algorithm>
 #include <array>
@@ -387,4 +387,4 @@ inline std::size_t make_intrinsic_delaunay(Intrinsic_triangulation& tri, std::ve
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_INTRINSIC_DELAUNAY_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_INTRINSIC_DELAUNAY_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_BOUNDARY_LOOPS_H
-#define EXPMAP_INTERNAL_BOUNDARY_LOOPS_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_BOUNDARY_LOOPS_H
+#define EXPMAP_INTERNAL_OPERATORS_BOUNDARY_LOOPS_H
 
 #include <expmap/internal/Mesh_arrays.h>
 
@@ -67,4 +67,4 @@ inline std::vector<char> vertices_on_long_boundary_loops(const Mesh_arrays& m,
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_BOUNDARY_LOOPS_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_BOUNDARY_LOOPS_H

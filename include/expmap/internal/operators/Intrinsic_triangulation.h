@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_INTRINSIC_TRIANGULATION_H
-#define EXPMAP_INTERNAL_INTRINSIC_TRIANGULATION_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_INTRINSIC_TRIANGULATION_H
+#define EXPMAP_INTERNAL_OPERATORS_INTRINSIC_TRIANGULATION_H
 
 #include <algorithm>
 #include <array>
@@ -81,4 +81,4 @@ inline Triangle_shape triangle_shape(const std::array<double, 3>& l) {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_INTRINSIC_TRIANGULATION_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_INTRINSIC_TRIANGULATION_H

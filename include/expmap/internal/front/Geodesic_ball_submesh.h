@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H
-#define EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H
+#ifndef EXPMAP_INTERNAL_FRONT_GEODESIC_BALL_SUBMESH_H
+#define EXPMAP_INTERNAL_FRONT_GEODESIC_BALL_SUBMESH_H
 
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
@@ -123,4 +123,4 @@ inline void extract_ball_submesh_around_point(const Mesh_arrays& m, int face, co
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_GEODESIC_BALL_SUBMESH_H
+#endif  // EXPMAP_INTERNAL_FRONT_GEODESIC_BALL_SUBMESH_H

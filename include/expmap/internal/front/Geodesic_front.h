@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_GEODESIC_FRONT_H
-#define EXPMAP_INTERNAL_GEODESIC_FRONT_H
+#ifndef EXPMAP_INTERNAL_FRONT_GEODESIC_FRONT_H
+#define EXPMAP_INTERNAL_FRONT_GEODESIC_FRONT_H
 
 /// \file Geodesic_front.h
 /// The geodesic front of discrete geodesic polar coordinates (Melvaer &
@@ -11,7 +11,6 @@
 /// (internal/heat/Map_choice.h).
 
 #include <expmap/Patch.h>
-#include <expmap/internal/Fibonacci_vertex_queue.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Point_source.h>
@@ -19,7 +18,8 @@
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Source_one_ring.h>
 #include <expmap/internal/Tangent_frame.h>
-#include <expmap/internal/Virtual_source.h>
+#include <expmap/internal/front/Fibonacci_vertex_queue.h>
+#include <expmap/internal/front/Virtual_source.h>
 
 #include <algorithm>
 #include <cmath>
@@ -242,4 +242,4 @@ class Geodesic_front {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_GEODESIC_FRONT_H
+#endif  // EXPMAP_INTERNAL_FRONT_GEODESIC_FRONT_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_POINT_DIRECTION_H
-#define EXPMAP_INTERNAL_POINT_DIRECTION_H
+#ifndef EXPMAP_INTERNAL_FRONT_POINT_DIRECTION_H
+#define EXPMAP_INTERNAL_FRONT_POINT_DIRECTION_H
 
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Point_source.h>
@@ -71,4 +71,4 @@ inline double point_native_angle(const Mesh_arrays& m, const Point_source& p, co
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_POINT_DIRECTION_H
+#endif  // EXPMAP_INTERNAL_FRONT_POINT_DIRECTION_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_VERTEX_TANGENT_FRAMES_H
-#define EXPMAP_INTERNAL_VERTEX_TANGENT_FRAMES_H
+#ifndef EXPMAP_INTERNAL_FRONT_VERTEX_TANGENT_FRAMES_H
+#define EXPMAP_INTERNAL_FRONT_VERTEX_TANGENT_FRAMES_H
 
 #include <expmap/Errors.h>
 #include <expmap/internal/Mesh_arrays.h>
@@ -110,4 +110,4 @@ inline std::array<double, 2> frame_rotation(const Vector3& n_p, const Vector3& a
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_VERTEX_TANGENT_FRAMES_H
+#endif  // EXPMAP_INTERNAL_FRONT_VERTEX_TANGENT_FRAMES_H

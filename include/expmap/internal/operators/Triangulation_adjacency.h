@@ -1,9 +1,9 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
-#define EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_TRIANGULATION_ADJACENCY_H
+#define EXPMAP_INTERNAL_OPERATORS_TRIANGULATION_ADJACENCY_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <algorithm>
 #include <array>
@@ -75,4 +75,4 @@ inline std::vector<int> ring_neighborhood(const Vertex_adjacency& a, int s, int 
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_TRIANGULATION_ADJACENCY_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_TRIANGULATION_ADJACENCY_H

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_COTAN_OPERATORS_H
-#define EXPMAP_INTERNAL_COTAN_OPERATORS_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_COTAN_OPERATORS_H
+#define EXPMAP_INTERNAL_OPERATORS_COTAN_OPERATORS_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -106,4 +106,4 @@ inline void make_identity_row(Sparse_matrix& A, const std::vector<int>& vertices
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_COTAN_OPERATORS_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_COTAN_OPERATORS_H

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_FIBONACCI_VERTEX_QUEUE_H
-#define EXPMAP_INTERNAL_FIBONACCI_VERTEX_QUEUE_H
+#ifndef EXPMAP_INTERNAL_FRONT_FIBONACCI_VERTEX_QUEUE_H
+#define EXPMAP_INTERNAL_FRONT_FIBONACCI_VERTEX_QUEUE_H
 
 #include <expmap/internal/Region_growing.h>
 
@@ -86,4 +86,4 @@ class Fibonacci_vertex_queue {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_FIBONACCI_VERTEX_QUEUE_H
+#endif  // EXPMAP_INTERNAL_FRONT_FIBONACCI_VERTEX_QUEUE_H

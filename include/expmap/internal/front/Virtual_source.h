@@ -1,7 +1,7 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_VIRTUAL_SOURCE_H
-#define EXPMAP_INTERNAL_VIRTUAL_SOURCE_H
+#ifndef EXPMAP_INTERNAL_FRONT_VIRTUAL_SOURCE_H
+#define EXPMAP_INTERNAL_FRONT_VIRTUAL_SOURCE_H
 
 #include <expmap/internal/Vector3.h>
 
@@ -93,4 +93,4 @@ inline Triangle_update virtual_source_update(const Vector3& pi, const Vector3& p
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_VIRTUAL_SOURCE_H
+#endif  // EXPMAP_INTERNAL_FRONT_VIRTUAL_SOURCE_H

@@ -1,10 +1,10 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_FACES_BY_SMALLEST_CORNER_H
-#define EXPMAP_INTERNAL_FACES_BY_SMALLEST_CORNER_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_FACES_BY_SMALLEST_CORNER_H
+#define EXPMAP_INTERNAL_OPERATORS_FACES_BY_SMALLEST_CORNER_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
-#include <expmap/internal/Normalized_gradient_divergence.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Normalized_gradient_divergence.h>
 
 #include <algorithm>
 #include <array>
@@ -59,4 +59,4 @@ class Faces_by_smallest_corner {
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_FACES_BY_SMALLEST_CORNER_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_FACES_BY_SMALLEST_CORNER_H

@@ -1,12 +1,12 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_FIBONACCI_DIJKSTRA_H
-#define EXPMAP_INTERNAL_FIBONACCI_DIJKSTRA_H
+#ifndef EXPMAP_INTERNAL_FRONT_FIBONACCI_DIJKSTRA_H
+#define EXPMAP_INTERNAL_FRONT_FIBONACCI_DIJKSTRA_H
 
-#include <expmap/internal/Fibonacci_vertex_queue.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
 #include <expmap/internal/Vector3.h>
+#include <expmap/internal/front/Fibonacci_vertex_queue.h>
 
 #include <vector>
 
@@ -87,4 +87,4 @@ void fibonacci_dijkstra(const Mesh_arrays& m, int source, Dijkstra_workspace& ws
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_FIBONACCI_DIJKSTRA_H
+#endif  // EXPMAP_INTERNAL_FRONT_FIBONACCI_DIJKSTRA_H

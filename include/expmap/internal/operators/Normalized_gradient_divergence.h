@@ -1,9 +1,9 @@
 // Copyright (c) 2026 expmap contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef EXPMAP_INTERNAL_NORMALIZED_GRADIENT_DIVERGENCE_H
-#define EXPMAP_INTERNAL_NORMALIZED_GRADIENT_DIVERGENCE_H
+#ifndef EXPMAP_INTERNAL_OPERATORS_NORMALIZED_GRADIENT_DIVERGENCE_H
+#define EXPMAP_INTERNAL_OPERATORS_NORMALIZED_GRADIENT_DIVERGENCE_H
 
-#include <expmap/internal/Intrinsic_triangulation.h>
+#include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <algorithm>
 #include <array>
@@ -110,4 +110,4 @@ inline std::array<double, 3> normalized_gradient_divergence(const Divergence_ste
 }  // namespace internal
 }  // namespace expmap
 
-#endif  // EXPMAP_INTERNAL_NORMALIZED_GRADIENT_DIVERGENCE_H
+#endif  // EXPMAP_INTERNAL_OPERATORS_NORMALIZED_GRADIENT_DIVERGENCE_H
