@@ -6,6 +6,10 @@
 /// \file Bench_options.h
 /// The command line of expmap-bench.
 
+#include <expmap/Heat_options.h>
+#include <expmap/Option_names.h>
+#include <expmap/Setting_ranges.h>
+
 #include <cstddef>
 #include <cstdlib>
 #include <sstream>
@@ -50,9 +54,10 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
                            kept (default 3); the methods take turns per
                            source, so a change of load hits them alike
   --time-factor M          Heat_options::time_factor (default: the library's)
-  --factor-precision P     double | single: Heat_options::factor_precision
-                           (default: double, the library's; the stream
-                           floor counts every factor entry as a double)
+  --factor-precision P     double-precision | single-precision (or double |
+                           single): Heat_options::factor_precision (default:
+                           the library's; the stream floor counts every
+                           factor entry as a double)
   --query-threads N        1 | 2: Heat_query_options::query_threads, the threads
                            one heat query runs on (default 1; the speed
                            targets are for one)
@@ -85,7 +90,7 @@ struct Bench_options {
   unsigned seed = 1;
   std::size_t repeats = 3;
   double time_factor = 0;  // 0: the library's default
-  bool single_precision_factors = false;
+  expmap::Factor_precision factor_precision = expmap::Heat_options().factor_precision;
   int query_threads = 1;
   double poisson_compression = -1;  // negative: the library's default
   std::string csv, stats, detail;
@@ -115,6 +120,15 @@ inline std::size_t parse_count(const std::string& option, const std::string& tex
   if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos)
     throw Usage_error(option + " expects a non-negative integer (got '" + text + "')");
   return static_cast<std::size_t>(std::stoull(text));
+}
+
+/// `value` if `range` holds it.
+inline double in_range(const std::string& option, const expmap::Setting_range& range,
+                       double value) {
+  if (!range.contains(value))
+    throw Usage_error(option + " must be " + range.range + " (got " +
+                      expmap::setting_value_text(value) + ")");
+  return value;
 }
 
 /// \throws Usage_error with a message for the user.
@@ -173,20 +187,20 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
     } else if (arg == "--seed") {
       o.seed = static_cast<unsigned>(parse_count(arg, value));
     } else if (arg == "--time-factor") {
-      o.time_factor = parse_double(arg, value);
-      if (!(o.time_factor > 0)) throw Usage_error("--time-factor must be positive");
+      o.time_factor = in_range(arg, expmap::setting_ranges::time_factor, parse_double(arg, value));
     } else if (arg == "--factor-precision") {
-      if (value != "double" && value != "single")
-        throw Usage_error("--factor-precision must be 'double' or 'single' (got '" + value + "')");
-      o.single_precision_factors = value == "single";
+      try {
+        o.factor_precision = expmap::from_string<expmap::Factor_precision>(value);
+      } catch (const expmap::Invalid_input& e) {
+        throw Usage_error(e.what());
+      }
     } else if (arg == "--query-threads") {
-      if (value != "1" && value != "2")
-        throw Usage_error("--query-threads must be 1 or 2 (got '" + value + "')");
-      o.query_threads = value == "2" ? 2 : 1;
+      o.query_threads = static_cast<int>(in_range(arg, expmap::setting_ranges::query_threads,
+                                                  static_cast<double>(parse_count(arg, value))));
     } else if (arg == "--poisson-compression") {
-      o.poisson_compression = parse_double(arg, value);
-      if (!(o.poisson_compression >= 0 && o.poisson_compression <= 1e-10))
-        throw Usage_error("--poisson-compression must be in [0, 1e-10]");
+      o.poisson_compression =
+          in_range(arg, expmap::setting_ranges::poisson_compression_tolerance,
+                   parse_double(arg, value));
     } else if (arg == "--csv") {
       o.csv = value;
     } else if (arg == "--stats") {

@@ -332,8 +332,7 @@ class Benchmark {
          "mesh,method,fraction,source,patch_vertices,ms,forward_nodes,backward_nodes,"
          "factor_entries,stream_floor_ms,solve_ms,region_retries");
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
-    if (options.single_precision_factors)
-      m_heat_options.factor_precision = expmap::Factor_precision::single_precision;
+    m_heat_options.factor_precision = options.factor_precision;
     if (options.poisson_compression >= 0)
       m_heat_options.poisson_compression_tolerance = options.poisson_compression;
     m_heat_query.query_threads = options.query_threads;
@@ -809,7 +808,7 @@ int main(int argc, char** argv) {
               << "), each query the fastest of " << options.repeats << " runs, methods taking turns";
     if (options.full_sources > 0)
       std::cout << ", heat-full on the first " << options.full_sources;
-    if (options.single_precision_factors) std::cout << "; single-precision factors";
+    if (options.factor_precision == expmap::Factor_precision::single_precision) std::cout << "; single-precision factors";
     if (options.query_threads > 1)
       std::cout << "; heat queries on " << options.query_threads << " threads";
     std::cout << "\n";

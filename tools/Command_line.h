@@ -12,6 +12,7 @@
 #include <expmap/Angle_estimator.h>
 #include <expmap/Heat_options.h>
 #include <expmap/Option_names.h>
+#include <expmap/Setting_ranges.h>
 
 #include <algorithm>
 #include <array>
@@ -67,7 +68,7 @@ struct Compute_arguments {
   std::optional<expmap::Laplacian_mode> laplacian;
   std::optional<expmap::Vertex_area> vertex_area;
   std::optional<expmap::Factor_precision> factor_precision;
-  std::optional<std::string> query_threads;     // "1" or "2"
+  std::optional<int> query_threads;
   std::optional<expmap::Angle_estimator> angles;
   std::optional<expmap::Near_source_blend> near_source_blend;
   std::optional<expmap::Heat_fallback> fallback;
@@ -233,13 +234,21 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       field = parse_real(name, text);
       if (!(*field > 0)) throw Usage_error(name + " must be positive (got " + text + ")");
     };
-    // A word that must be one of two (given at most once).
-    auto one_of = [&](std::optional<std::string>& field, const char* first, const char* second) {
+    // A number in the range the library gives the setting (given at most once).
+    auto in_range = [&](auto& field, const expmap::Setting_range& range) {
       once(field.has_value());
-      field = take_value();
-      if (*field != first && *field != second)
-        throw Usage_error(name + " must be '" + first + "' or '" + second + "' (got '" + *field +
-                          "')");
+      const std::string text = take_value();
+      using Number = typename std::decay_t<decltype(field)>::value_type;
+      if constexpr (std::is_integral_v<Number>) {
+        const std::size_t value = parse_index(name, text);
+        if (!range.contains(static_cast<double>(value)))
+          throw Usage_error(name + " must be " + range.range + " (got " + text + ")");
+        field = static_cast<Number>(value);
+      } else {
+        field = parse_real(name, text);
+        if (!range.contains(*field))
+          throw Usage_error(name + " must be " + range.range + " (got " + text + ")");
+      }
     };
     // A setting named as in expmap/Option_names.h (given at most once).
     auto named = [&](auto& field) {
@@ -274,7 +283,7 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       a.method = take_value();
       method_given = true;
     } else if (name == "--time-factor") {
-      positive_real(a.time_factor);
+      in_range(a.time_factor, expmap::setting_ranges::time_factor);
     } else if (name == "--laplacian") {
       named(a.laplacian);
     } else if (name == "--vertex-area") {
@@ -282,7 +291,7 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
     } else if (name == "--factor-precision") {
       named(a.factor_precision);
     } else if (name == "--query-threads") {
-      one_of(a.query_threads, "1", "2");
+      in_range(a.query_threads, expmap::setting_ranges::query_threads);
     } else if (name == "--angles") {
       named(a.angles);
     } else if (name == "--fallback") {
@@ -297,8 +306,10 @@ void parse_map_options(const std::vector<std::string>& args, const std::string& 
       expmap::Near_source_blend blend;
       blend.begin = parse_real(name, text.substr(0, comma));
       blend.end = parse_real(name, text.substr(comma + 1));
-      if (!(blend.begin >= 0) || !(blend.end >= blend.begin))
-        throw Usage_error("--near-source-blend needs 0 <= BEGIN <= END (got '" + text + "')");
+      const expmap::Setting_range& range = expmap::setting_ranges::near_source_blend;
+      if (!range.contains(blend.begin) || !range.contains(blend.end) || blend.begin > blend.end)
+        throw Usage_error("--near-source-blend must be " + std::string(range.range) + " (got '" +
+                          text + "')");
       a.near_source_blend = blend;
     } else if (name == "--reference") {
       once(a.reference.has_value());

@@ -89,6 +89,20 @@ std::string named_option_help(const char* metavar, Enum default_value) {
   return h;
 }
 
+/// The help of a numeric heat setting (expmap/Setting_ranges.h): the
+/// option, its line of help, `more` after it, its range and `default_text`.
+inline std::string numeric_option_help(const expmap::Setting_range& setting, const char* metavar,
+                                       const std::string& default_text,
+                                       const std::string& more = "") {
+  std::string flag = setting.name;
+  std::replace(flag.begin(), flag.end(), '_', '-');
+  std::string head = "  --" + flag + " " + metavar;
+  head.resize(std::max<std::size_t>(head.size() + 1, 23), ' ');
+  return head + wrapped(std::string("heat only: ") + setting.help + more + " (" + setting.range +
+                            "; default: " + default_text + ")",
+                        23, head.size());
+}
+
 /// The options of the patch, the method and the input, which `compute` and
 /// `batch` share; `method_list` lists the methods, one indented line each.
 inline std::string map_options_help(const std::string& method_list) {
@@ -111,26 +125,20 @@ inline std::string map_options_help(const std::string& method_list) {
        "                       some 15,000 patch vertices; per thread in a batch)\n"
        "                       exceeds the memory available; without it such a run\n"
        "                       stops with an error before its first map\n"
-       "  --time-factor T      heat only: diffusion time t = T h^2, h the mean edge\n"
-       "                       length; larger is smoother (default: "
-    << defaults.time_factor << ")\n"
+    << numeric_option_help(expmap::setting_ranges::time_factor, "T",
+                           expmap::setting_value_text(defaults.time_factor))
     << named_option_help("L", defaults.laplacian)
     << named_option_help("A", defaults.vertex_area)
     << named_option_help("P", defaults.factor_precision)
-    << "  --query-threads N    heat only: 1 | 2, threads one map is computed on; with\n"
-       "                       2 the angles' solve runs beside the distance's,\n"
-       "                       0.79-0.93x the time on patches of 750+ vertices, the\n"
-       "                       same map up to round-off (default: "
-    << query_defaults.query_threads << "; expmap batch on\n"
-       "                       more than one thread gives each a source and each map\n"
-       "                       one thread)\n"
+    << numeric_option_help(expmap::setting_ranges::query_threads, "N",
+                           std::to_string(query_defaults.query_threads),
+                           "; expmap batch on more than one thread gives each a source and "
+                           "each map one thread")
     << named_option_help("A", query_defaults.angle_estimator)
-    << "  --near-source-blend B,E  heat only: chord directions (and, for the source's\n"
-       "                       neighbours, edge lengths) up to B mean edge lengths\n"
-       "                       from the source, heat coordinates from E on, blended\n"
-       "                       between; 0,0 for pure heat coordinates (default: "
-    << query_defaults.near_source_blend.begin << "," << query_defaults.near_source_blend.end
-    << ")\n"
+    << numeric_option_help(
+           expmap::setting_ranges::near_source_blend, "B,E",
+           expmap::setting_value_text(query_defaults.near_source_blend.begin) + "," +
+               expmap::setting_value_text(query_defaults.near_source_blend.end))
     << named_option_help("F", query_defaults.fallback)
     << "  --reference X,Y,Z    direction of angle 0, projected onto the source's\n"
        "                       tangent plane (default: the x axis, or the y axis where\n"

@@ -117,7 +117,7 @@ expmap::Heat_query_options query_settings<Heat>(const Compute_arguments& a,
   if (a.angles) query.angle_estimator = *a.angles;
   if (a.near_source_blend) query.near_source_blend = *a.near_source_blend;
   if (a.fallback) query.fallback = *a.fallback;
-  if (a.query_threads) query.query_threads = *a.query_threads == "2" ? 2 : 1;
+  if (a.query_threads) query.query_threads = *a.query_threads;
   return query;
 }
 

@@ -13,8 +13,8 @@
 #include <expmap/Factor_precision.h>
 #include <expmap/Patch.h>
 #include <expmap/Precomputation_progress.h>
+#include <expmap/Setting_ranges.h>
 
-#include <cmath>
 #include <string>
 
 namespace expmap {
@@ -90,7 +90,7 @@ struct Heat_options {
   Factor_precision factor_precision = Factor_precision::double_precision;
   /// Truncation of the low-rank rows below the Poisson factor's large
   /// separators (meshes above about 100k vertices): fewer entries read per
-  /// query. 0 keeps every block dense. At most 1e-10.
+  /// query. 0 keeps every block dense. Range: `setting_ranges`.
   double poisson_compression_tolerance = 1e-14;
   /// Reports the precomputation's steps as it runs (see
   /// `Precomputation_callback`); empty: no reports. Only the constructor
@@ -108,19 +108,18 @@ struct Heat_query_options : Query_options {
   Heat_query_options(const Query_options& shared) : Query_options(shared) {}
 
   /// A query solves on a region this many times larger (in vertices) than
-  /// its patch; the Poisson step's cut-off error stays in the margin. At
-  /// least 1.
+  /// its patch; the Poisson step's cut-off error stays in the margin.
+  /// Range: `setting_ranges`, as for every numeric setting.
   double region_growth = 2.0;
   /// On small patches of meshes of 200,000 vertices or more, heat below
   /// this tolerance times the smallest value read is not propagated
-  /// (values move by about this relative amount). 0 never prunes; at most
-  /// 1e-10.
+  /// (values move by about this relative amount). 0 never prunes.
   double pruning_tolerance = 1e-12;
   /// How the direction of the geodesic is read off the heat.
   Angle_estimator angle_estimator = Angle_estimator::heat_quadratic_fit;
   /// Geometric directions next to the source, heat directions beyond.
   Near_source_blend near_source_blend;
-  /// 1 or 2. With 2 the query's star solve runs on a second thread beside
+  /// With 2 the query's star solve runs on a second thread beside
   /// the distance: for one query at a time, as in an interactive tool
   /// (`compute_many()` already keeps every core busy).
   int query_threads = 1;
@@ -130,37 +129,30 @@ struct Heat_query_options : Query_options {
 };
 
 /// \ingroup PkgExpmapRef
-/// `options` if every setting is in its range.
+/// `options` if every setting is in its range (`setting_ranges`).
 /// \throws Invalid_input naming the first setting that is not.
 inline const Heat_options& checked(const Heat_options& options) {
-  if (!(options.time_factor > 0) || !std::isfinite(options.time_factor))
-    throw Invalid_input("the time factor must be positive and finite (got " +
-                        std::to_string(options.time_factor) + ")");
-  if (!(options.poisson_compression_tolerance >= 0) ||
-      !(options.poisson_compression_tolerance <= 1e-10))
-    throw Invalid_input("poisson_compression_tolerance must be in [0, 1e-10] (got " +
-                        std::to_string(options.poisson_compression_tolerance) + ")");
+  checked_setting(setting_ranges::time_factor, options.time_factor);
+  checked_setting(setting_ranges::poisson_compression_tolerance,
+                  options.poisson_compression_tolerance);
   return options;
 }
 
 /// \ingroup PkgExpmapRef
-/// `query` if every heat setting is in its range (the shared ones are
-/// checked where they are used).
+/// `query` if every heat setting is in its range (`setting_ranges`; the
+/// shared ones are checked where they are used).
 /// \throws Invalid_input naming the first setting that is not.
 inline const Heat_query_options& checked(const Heat_query_options& query) {
   const Near_source_blend& blend = query.near_source_blend;
-  if (!(blend.begin >= 0) || !(blend.end >= blend.begin) || !std::isfinite(blend.end))
-    throw Invalid_input("near_source_blend must satisfy 0 <= begin <= end < infinity (got begin " +
-                        std::to_string(blend.begin) + ", end " + std::to_string(blend.end) + ")");
-  if (!(query.pruning_tolerance >= 0) || !(query.pruning_tolerance <= 1e-10))
-    throw Invalid_input("pruning_tolerance must be in [0, 1e-10] (got " +
-                        std::to_string(query.pruning_tolerance) + ")");
-  if (query.query_threads != 1 && query.query_threads != 2)
-    throw Invalid_input("query_threads must be 1 or 2 (got " +
-                        std::to_string(query.query_threads) + ")");
-  if (!(query.region_growth >= 1) || !std::isfinite(query.region_growth))
-    throw Invalid_input("region_growth must be at least 1 (got " +
-                        std::to_string(query.region_growth) + ")");
+  const Setting_range& blend_range = setting_ranges::near_source_blend;
+  if (!blend_range.contains(blend.begin) || !blend_range.contains(blend.end) ||
+      !(blend.begin <= blend.end))
+    throw Invalid_input(std::string(blend_range.name) + " must be " + blend_range.range +
+                        " (got begin " + setting_value_text(blend.begin) + ", end " +
+                        setting_value_text(blend.end) + ")");
+  checked_setting(setting_ranges::pruning_tolerance, query.pruning_tolerance);
+  checked_setting(setting_ranges::query_threads, query.query_threads);
+  checked_setting(setting_ranges::region_growth, query.region_growth);
   return query;
 }
 

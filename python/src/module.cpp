@@ -9,6 +9,7 @@
 #include "Map_arrays.h"
 #include "Mesh_from_arrays.h"
 #include "Named_enums.h"
+#include "Numeric_setting_docs.h"
 #include "Result_classes.h"
 
 #include <expmap/Batch.h>
@@ -26,9 +27,11 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
-#include <limits>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <memory>
 #include <numeric>
 #include <optional>
@@ -291,6 +294,28 @@ expmap::Batch_options batch_options_argument(py::handle threads_object) {
 
 namespace {
 
+/// A batch's progress callback that calls the Python callable `progress`
+/// (None: none) with (done, total) at most ten times a second and after the
+/// last map. The batch calls it under a lock; it takes the GIL.
+inline std::function<void(std::size_t, std::size_t)> batch_progress_argument(
+    const py::object& progress) {
+  if (progress.is_none()) return {};
+  if (!PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress must be callable as progress(done, total) (got " +
+                         py::repr(progress).cast<std::string>() + ")");
+  using Clock = std::chrono::steady_clock;
+  // A borrowed handle: `progress` outlives the batch, and copies of the
+  // callback made without the GIL must not count references.
+  return [callback = py::handle(progress), last = Clock::time_point()](
+             std::size_t done, std::size_t total) mutable {
+    const Clock::time_point now = Clock::now();
+    if (done < total && now - last < std::chrono::milliseconds(100)) return;
+    last = now;
+    py::gil_scoped_acquire gil;
+    callback(done, total);
+  };
+}
+
 /// compute(), compute_many(), the queries from points and the shared
 /// properties of every method class.
 template <class Method>
@@ -331,14 +356,15 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       "compute_many",
       [](const Bound& b, py::handle sources_object, std::optional<double> radius,
          std::optional<double> fraction, py::object vertices, py::object vertex_set,
-         py::handle reference, py::handle threads_object, bool trim_folds,
+         py::handle reference, py::handle threads_object, bool trim_folds, py::object progress,
          const py::kwargs& settings) {
         const Index_array checked = checked_indices(sources_object, "sources", b.rows);
         const std::vector<std::size_t> sources(checked.data(), checked.data() + checked.size());
         const expmap::Patch patch = patch_argument(b, radius, fraction, vertices, vertex_set);
         const typename Method::Query query =
             query_argument<Method>("compute_many", reference, trim_folds, settings);
-        const expmap::Batch_options options = batch_options_argument(threads_object);
+        expmap::Batch_options options = batch_options_argument(threads_object);
+        options.progress = batch_progress_argument(progress);
         expmap::Batch_result<Mesh::Vertex_index> batch;
         {
           py::gil_scoped_release release;
@@ -355,17 +381,20 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
       py::arg("sources"), py::kw_only(), py::arg("radius") = py::none(),
       py::arg("fraction") = py::none(), py::arg("vertices") = py::none(),
       py::arg("vertex_set") = py::none(), py::arg("reference") = py::none(),
-      py::arg("threads") = 0, py::arg("trim_folds") = false,
+      py::arg("threads") = 0, py::arg("trim_folds") = false, py::arg("progress") = py::none(),
       (std::string("compute_many(sources, *, radius=None, fraction=None, vertices=None, "
-                   "vertex_set=None, reference=None, threads=0, trim_folds=False)\n"
-                   "    -> BatchMaps\n\n"
+                   "vertex_set=None, reference=None, threads=0, trim_folds=False,\n"
+                   "             progress=None) -> BatchMaps\n\n"
                    "One map per source (a 1-D integer array), computed on ``threads``\n"
                    "threads (0: one per core) without holding the GIL. ") +
        patch_doc +
        "\nA query that fails does not end the batch: its source gets no rows and\n"
        "its message in ``errors``. ``batch[i]`` and ``for m in batch`` give each\n"
-       "source's map as a BatchMap of views into the flat arrays. Raises ValueError\n"
-       "for invalid arguments (sources out of range, a bad patch).")
+       "source's map as a BatchMap of views into the flat arrays. ``progress``:\n"
+       "None, or a callable progress(done, total) called about ten times a\n"
+       "second and after the last map; an exception it raises stops the batch.\n"
+       "Raises ValueError for invalid arguments (sources out of range, a bad\n"
+       "patch).")
           .c_str());
   add_point_queries(c);
   c.def_property_readonly(
@@ -404,6 +433,7 @@ void bind_heat(py::module_& m) {
   using Bound = Bound_method<Method>;
   const expmap::Heat_options defaults;
   const expmap::Heat_query_options query_defaults;
+  namespace ranges = expmap::setting_ranges;
   py::class_<Bound> c(
       m, "HeatExponentialMap",
       "The smoothed exponential map of Herholz & Alexa (Computer Graphics Forum\n"
@@ -415,7 +445,7 @@ void bind_heat(py::module_& m) {
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     py::handle laplacian, py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double poisson_compression_tolerance,
-                    const py::kwargs& rest) {
+                    py::object progress, const py::kwargs& rest) {
           for (auto item : rest) {
             const std::string key = py::str(item.first);
             if (is_heat_query_setting(key))
@@ -433,6 +463,19 @@ void bind_heat(py::module_& m) {
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.poisson_compression_tolerance = poisson_compression_tolerance;
+          if (!progress.is_none()) {
+            if (!PyCallable_Check(progress.ptr()))
+              throw py::type_error("progress must be callable as progress(step, fraction) (got " +
+                                   py::repr(progress).cast<std::string>() + ")");
+            // A borrowed handle: `progress` outlives the precomputation, and
+            // copies of the callback made without the GIL must not count
+            // references.
+            options.progress = [callback = py::handle(progress)](const char* step,
+                                                                 double fraction) {
+              py::gil_scoped_acquire gil;
+              callback(step, fraction);
+            };
+          }
           return bind_to_arrays<Method>(vertices, faces, [&](const Mesh& mesh) {
             return std::make_unique<const Method>(mesh, options);
           });
@@ -444,37 +487,40 @@ void bind_heat(py::module_& m) {
         py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
         py::arg("poisson_compression_tolerance") = defaults.poisson_compression_tolerance,
+        py::arg("progress") = py::none(),
         std::string("Precomputes operators and factorizations of the mesh (vertices: float\n"
         "array n x 3; faces: integer array m x 3, made a mesh as for\n"
-        "DiscreteExponentialMap).\n\n"
-        "time_factor: diffusion time t = time_factor * h^2, h the mean edge length;\n"
-        "    larger is smoother.\n" +
+        "DiscreteExponentialMap).\n\n" +
+         numeric_setting_doc(ranges::time_factor, expmap::setting_value_text(defaults.time_factor)) +
          enum_setting_doc("laplacian", "LaplacianMode", defaults.laplacian) +
          enum_setting_doc("vertex_area", "VertexArea", defaults.vertex_area) +
          enum_setting_doc("factor_precision", "FactorPrecision", defaults.factor_precision) +
          enum_setting_doc("regularization", "PoissonRegularization", defaults.regularization) +
-        "poisson_compression_tolerance: the Poisson factor's large separators\n"
-        "    compressed to this relative tolerance, their rows below as truncated\n"
-        "    SVDs (in [0, 1e-10]; 0: dense); fewer entries read per query on large\n"
-        "    meshes.\n\n"
-        "compute() and compute_many() take these query settings as keywords too:\n"
-        "region_growth: a query solves on a region this many times larger than the\n"
-        "    patch (at least 1; default 2).\n"
-        "pruning_tolerance: heat solves of small patches of large meshes skip\n"
-        "    entries below this times the smallest heat read (in [0, 1e-10]; 0:\n"
-        "    never; default 1e-12).\n" +
+         numeric_setting_doc(ranges::poisson_compression_tolerance,
+                             expmap::setting_value_text(defaults.poisson_compression_tolerance)) +
+        "progress: None, or a callable progress(step, fraction) called at the start\n"
+        "    of each step of the precomputation with its name and the estimated\n"
+        "    share of the time done before it, and at the end with ('done', 1.0);\n"
+        "    an exception it raises cancels the precomputation and leaves the\n"
+        "    constructor.\n"
+        "\ncompute() and compute_many() take these query settings as keywords too:\n" +
+         numeric_setting_doc(ranges::region_growth,
+                             expmap::setting_value_text(query_defaults.region_growth)) +
+         numeric_setting_doc(ranges::pruning_tolerance,
+                             expmap::setting_value_text(query_defaults.pruning_tolerance)) +
          enum_setting_doc("angle_estimator", "AngleEstimator", query_defaults.angle_estimator) +
-        "near_source_blend: (begin, end) in mean edge lengths: chord directions (and\n"
-        "    the source's neighbours' edge lengths) up to begin from the source, heat\n"
-        "    coordinates from end on, blended between; each query scales both so\n"
-        "    the blend ends where the normal has turned by 1 rad (at most 1.5x);\n"
-        "    (0, 0) for the paper's pure heat coordinates.\n" +
+         numeric_setting_doc(ranges::near_source_blend,
+                             "(" + expmap::setting_value_text(query_defaults.near_source_blend.begin) +
+                                 ", " +
+                                 expmap::setting_value_text(query_defaults.near_source_blend.end) + ")",
+                             "; each query scales both so "
+                             "the blend ends where the normal has turned by 1 rad (at most 1.5x)") +
          enum_setting_doc("fallback", "HeatFallback", query_defaults.fallback) +
-        "query_threads: 1 or 2, threads one query runs on; with 2 the angles' solve\n"
-        "    runs beside the distance's (the same maps up to round-off, 0.79-0.93x\n"
-        "    the time on patches of 750+ vertices). compute_many on more than one\n"
-        "    thread runs a source per thread, each on one, and gives the same maps\n"
-        "    bit for bit on any number of threads.\n\n"
+         numeric_setting_doc(ranges::query_threads, std::to_string(query_defaults.query_threads),
+                             "; compute_many on more than one thread runs a source per thread, "
+                             "each on one, and gives the same maps bit for bit on any number of "
+                             "threads") +
+        "\n"
         "Raises ValueError for bad arrays (see DiscreteExponentialMap) and options\n"
         "(a query's settings when it is asked).")
             .c_str());

@@ -128,12 +128,53 @@ def test_methods_are_the_same_everywhere(cli_help):
         assert cls.__name__ in dir(expmap)
 
 
-def test_manual_numeric_defaults_are_the_programs(cli_help):
-    time_factor = re.search(r"--time-factor T .*?\(default: ([0-9.]+)\)", cli_help, re.S)
-    assert manual_bullet("time_factor").startswith(time_factor.group(1) + " ")
-    blend = re.search(r"--near-source-blend B,E .*?\(default: ([0-9.]+),([0-9.]+)\)", cli_help,
-                      re.S)
-    assert manual_bullet("near_source_blend").startswith(
-        "{%s, %s} " % (blend.group(1), blend.group(2)))
-    threads = re.search(r"--query-threads N .*?\(default: ([0-9]+)", cli_help, re.S)
-    assert manual_bullet("query_threads").startswith(threads.group(1) + " ")
+# Each numeric setting: Python's keyword, whether it is a query's setting,
+# the command-line flag (None where the command line has none) and a value
+# out of its range.
+NUMERIC_SETTINGS = [
+    ("time_factor", False, "--time-factor", 0.0),
+    ("poisson_compression_tolerance", False, None, 1e-9),
+    ("region_growth", True, None, 0.5),
+    ("pruning_tolerance", True, None, -1.0),
+    ("near_source_blend", True, "--near-source-blend", (3.0, 1.0)),
+    ("query_threads", True, "--query-threads", 3),
+]
+
+
+def numbers(text):
+    return [float(x) for x in re.findall(r"[0-9.]+(?:e-?[0-9]+)?", text)]
+
+
+def python_range_and_default(keyword):
+    """The range and default the constructor's docstring gives `keyword`."""
+    doc = expmap.HeatExponentialMap.__init__.__doc__.split("\n", 1)[1]  # not the signature
+    doc = " ".join(doc.split())
+    match = re.search(r"(?:^| )" + keyword + r": .*? \(([^;()]+); default: (.+?)\)\.", doc)
+    assert match, "HeatExponentialMap's docstring gives %s no range and default" % keyword
+    return match.group(1), numbers(match.group(2))
+
+
+@pytest.mark.parametrize("keyword,is_query,flag,bad", NUMERIC_SETTINGS)
+def test_numeric_settings_agree_everywhere(cli_help, elephant, keyword, is_query, flag, bad):
+    value_range, default = python_range_and_default(keyword)
+    bullet = " ".join(manual_bullet(keyword).split())
+    head = re.match(r"\{[^}]*\}|[^ ,:]+", bullet).group(0)  # "10", "{2, 6}"
+    assert numbers(head) == default, \
+        "doc/manual.md gives %s a default other than %s" % (keyword, default)
+    assert value_range.lower() in bullet.lower(), \
+        "doc/manual.md does not give %s's range (%s)" % (keyword, value_range)
+    if flag is not None:
+        lines = cli_help.splitlines()
+        start = next(i for i, line in enumerate(lines) if line.startswith("  " + flag + " "))
+        end = next(i for i in range(start + 1, len(lines)) if not lines[i].startswith("    "))
+        block = " ".join(" ".join(lines[start:end]).split())
+        match = re.search(r" \(([^;()]+); default: ([^)]+)\)$", block)
+        assert match, "%s has no range and default in the help" % flag
+        assert match.group(1) == value_range
+        assert numbers(match.group(2)) == default
+    _, V, F = elephant
+    with pytest.raises(ValueError, match=re.escape("%s must be %s" % (keyword, value_range))):
+        if is_query:
+            expmap.HeatExponentialMap(V, F).compute(0, vertices=30, **{keyword: bad})
+        else:
+            expmap.HeatExponentialMap(V, F, **{keyword: bad})

@@ -94,10 +94,12 @@ BOOST_AUTO_TEST_CASE(bad_parameters) {
   expmap::Heat_options options;
   options.time_factor = 0;
   check_message<expmap::Invalid_input>(
-      [&] { expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options); }, "time factor");
+      [&] { expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options); },
+      "time_factor must be positive");
   options.time_factor = -3;
   check_message<expmap::Invalid_input>(
-      [&] { expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options); }, "time factor");
+      [&] { expmap::Heat_exponential_map<Surface_mesh> heat(mesh, options); },
+      "time_factor must be positive");
 }
 
 BOOST_AUTO_TEST_CASE(source_and_patch_vertices_out_of_range) {

@@ -15,6 +15,7 @@
 
 #include <expmap/Fold_overs.h>
 #include <expmap/Locate_surface_point.h>
+#include <expmap/Option_names.h>
 
 #include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -90,11 +91,9 @@ class Map_service {
   Map_response compute(const std::multimap<std::string, std::string>& params) {
     const Map_request request = parse_map_request(params, m_limits);
     const Method_info* info = find_method(request.method);
-    if (!info) {
-      std::string known;
-      for (const Method_info& m : viewer_methods()) known += (known.empty() ? "" : ", ") + std::string(m.name);
-      throw Bad_request("unknown method '" + shown(request.method) + "' (known: " + known + ")");
-    }
+    if (!info)
+      throw Bad_request("unknown method '" + shown(request.method) +
+                        "' (known: " + expmap::value_names<expmap::Map_method>() + ")");
 
     // The page sends points of the surface. Far ones are refused before any
     // precomputation: their nearest surface points mean nothing to a viewer
