@@ -16,7 +16,7 @@ packages=(g++ cmake make ccache
           libopenmesh-dev
           # The Python module, its tests and its Dask layer (python/, test/python/),
           # and the test that loads `expmap batch` .npz output with NumPy.
-          python3-dev python3-numpy pybind11-dev python3-pytest python3-distributed
+          python3-dev python3-numpy python3-scipy pybind11-dev python3-pytest python3-distributed
           # `pip install .` (pyproject.toml) and its test in a fresh venv.
           python3-pip python3-venv python3-setuptools python3-wheel
           # `expmap view`: its web server, and Chromium for the test that

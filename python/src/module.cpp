@@ -287,13 +287,6 @@ expmap::Batch_options batch_options_argument(py::handle threads_object) {
   return options;
 }
 
-}  // namespace
-
-// The queries from points of faces, written with the helpers above.
-#include "Point_queries.h"
-
-namespace {
-
 /// A batch's progress callback that calls the Python callable `progress`
 /// (None: none) with (done, total) at most ten times a second and after the
 /// last map. The batch calls it under a lock; it takes the GIL.
@@ -315,6 +308,15 @@ inline std::function<void(std::size_t, std::size_t)> batch_progress_argument(
     callback(done, total);
   };
 }
+
+}  // namespace
+
+// The queries from points of faces and the patch operator, written with the
+// helpers above.
+#include "Patch_operator_binding.h"
+#include "Point_queries.h"
+
+namespace {
 
 /// compute(), compute_many(), the queries from points and the shared
 /// properties of every method class.
@@ -397,6 +399,7 @@ void add_queries(py::class_<Bound_method<Method>>& c) {
        "patch).")
           .c_str());
   add_point_queries(c);
+  add_patch_operator(c);
   c.def_property_readonly(
       "number_of_vertices", [](const Bound& b) { return b.rows; },
       "Number of vertices of the mesh: rows of the vertex array it was built from.");

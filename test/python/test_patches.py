@@ -1,0 +1,82 @@
+# Copyright (c) 2026 expmap contributors.
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""method.patch_operator(): the polar patch operator from Python, against
+linear functions on a plane (reproduced exactly at every grid point) and at
+a boundary (masked, never NaN)."""
+
+import math
+
+import numpy as np
+import pytest
+
+import expmap
+
+
+def plane(n=30, half=1.0):
+    """A square [-half, half]^2 of the plane z = 0, n x n cells, two triangles each."""
+    x = np.linspace(-half, half, n + 1)
+    X, Y = np.meshgrid(x, x)
+    V = np.column_stack([X.ravel(), Y.ravel(), np.zeros(X.size)])
+    F = []
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i
+            F += [[a, a + 1, a + n + 2], [a, a + n + 2, a + n + 1]]
+    return V, np.array(F)
+
+
+@pytest.mark.parametrize("cls", [expmap.GeodesicPolarCoordinates, expmap.ExactExponentialMap])
+def test_linear_functions_on_a_plane_are_reproduced(cls):
+    V, F = plane()
+    f = 0.7 * V[:, 0] - 1.3 * V[:, 1] + 0.2
+    sources = [i for i in range(len(V)) if max(abs(V[i, 0]), abs(V[i, 1])) < 0.5][::7]
+    op = cls(V, F).patch_operator(sources, radius=0.3, rings=4, rays=8, reference=(1, 0, 0))
+    assert op.sampled.shape == (len(sources), 4, 8) and op.sampled.all()
+    patches = op.patches(f)
+    assert patches.shape == (len(sources), 4, 8)
+    rho = (np.arange(4) + 0.5) * 0.3 / 4
+    theta = 2 * math.pi * np.arange(8) / 8
+    for s, source in enumerate(sources):
+        x = V[source, 0] + np.outer(rho, np.cos(theta))
+        y = V[source, 1] + np.outer(rho, np.sin(theta))
+        assert np.abs(patches[s] - (0.7 * x - 1.3 * y + 0.2)).max() < 1e-9
+
+
+def test_weights_are_the_operator_and_channels_keep_their_shape(elephant):
+    _, V, F = elephant
+    op = expmap.HeatExponentialMap(V, F).patch_operator(range(0, len(V), 50), radius=0.05,
+                                                        threads=2)
+    assert op.weights.shape == (len(op.sources) * 5 * 16, len(V))
+    signal = np.column_stack([V[:, 0], V[:, 1] ** 2])
+    patches = op.patches(signal)
+    assert patches.shape == (len(op.sources), 5, 16, 2)
+    if isinstance(op.weights, tuple):
+        pytest.skip("SciPy is not installed")
+    expected = (op.weights @ signal).reshape(patches.shape)
+    assert np.allclose(patches, expected, rtol=0, atol=1e-12)
+    rows = np.asarray(op.weights.sum(axis=1)).ravel()
+    assert np.allclose(rows[op.sampled.ravel()], 1)
+    assert (rows[~op.sampled.ravel()] == 0).all()
+    assert op.errors == [""] * len(op.sources)
+
+
+def test_every_vertex_by_default_and_boundaries_masked():
+    V, F = plane(12)
+    op = expmap.GeodesicPolarCoordinates(V, F).patch_operator(radius=0.5, rings=3, rays=6)
+    assert list(op.sources) == list(range(len(V)))
+    assert op.sampled.shape == (len(V), 3, 6)
+    assert 0 < op.sampled.sum() < op.sampled.size  # the corners see past the border
+    assert np.isfinite(op.patches(V)).all()
+
+
+def test_bad_grids_are_refused():
+    V, F = plane(4)
+    dgpc = expmap.GeodesicPolarCoordinates(V, F)
+    with pytest.raises(ValueError, match="radius must be positive"):
+        dgpc.patch_operator([0], radius=0.0)
+    with pytest.raises(ValueError, match="at least one ring"):
+        dgpc.patch_operator([0], radius=0.5, rings=0)
+    with pytest.raises(ValueError, match="out of range"):
+        dgpc.patch_operator([len(V)], radius=0.5)
+    with pytest.raises(ValueError, match="signal must have shape"):
+        dgpc.patch_operator([0], radius=0.5).patches(np.zeros(3))
