@@ -400,12 +400,16 @@ inline Compute_arguments parse_compute_arguments(const std::vector<std::string>&
   return a;
 }
 
-/// Parses the arguments that follow `batch`.
-/// \throws Usage_error naming the offending option or value.
-inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& args) {
-  Batch_arguments a;
-  bool sources_given = false, threads_given = false;
-  parse_map_options(args, "batch", a, [&](const std::string& name, auto take_value) {
+namespace detail {
+
+/// Parses the arguments of a command that maps many sources: `own` takes
+/// the command's own options first (returning whether it knew the option).
+template <class Arguments, class Own>
+void parse_many_sources(const std::vector<std::string>& args, const std::string& command,
+                        Arguments& a, bool& sources_given, Own own) {
+  bool threads_given = false;
+  parse_map_options(args, command, a, [&](const std::string& name, auto take_value) {
+    if (own(name, take_value)) return true;
     if (name == "--sources") {
       check_once(name, sources_given);
       a.sources = parse_sources(name, take_value());
@@ -426,6 +430,17 @@ inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& arg
     }
     return true;
   });
+}
+
+}  // namespace detail
+
+/// Parses the arguments that follow `batch`.
+/// \throws Usage_error naming the offending option or value.
+inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& args) {
+  Batch_arguments a;
+  bool sources_given = false;
+  detail::parse_many_sources(args, "batch", a, sources_given,
+                             [](const std::string&, auto) { return false; });
   if (a.help) return a;
   if (sources_given == !a.point_option.empty())
     throw Usage_error(sources_given ? "--sources and --source-points exclude each other"
@@ -433,6 +448,42 @@ inline Batch_arguments parse_batch_arguments(const std::vector<std::string>& arg
                                       "vertex indices) or --source-points FILE (X,Y,Z lines)");
   using F = Output_format;
   check_patch_and_outputs(a, {F::csv, F::npz}, ".csv or .npz");
+  return a;
+}
+
+/// What `expmap patches` was asked to do: a batch's sources and method, a
+/// polar grid instead of a patch.
+struct Patches_arguments : Batch_arguments {
+  std::size_t rings = 5, rays = 16;
+};
+
+/// Parses the arguments that follow `patches`.
+/// \throws Usage_error naming the offending option or value.
+inline Patches_arguments parse_patches_arguments(const std::vector<std::string>& args) {
+  Patches_arguments a;
+  a.method = "dgpc";
+  bool sources_given = false, rings_given = false, rays_given = false;
+  detail::parse_many_sources(
+      args, "patches", a, sources_given, [&](const std::string& name, auto take_value) {
+        if (name != "--rings" && name != "--rays") return false;
+        bool& given = name == "--rings" ? rings_given : rays_given;
+        check_once(name, given);
+        const std::size_t count = parse_index(name, take_value());
+        if (count < 1 || count > 4096)
+          throw Usage_error(name + " must be in [1, 4096] (got " + std::to_string(count) + ")");
+        (name == "--rings" ? a.rings : a.rays) = count;
+        given = true;
+        return true;
+      });
+  if (a.help) return a;
+  if (!a.point_option.empty()) throw Usage_error("patches takes --sources, not --source-points");
+  if (!a.radius) throw Usage_error("give the grid's --radius R");
+  if (a.fraction || a.vertex_count)
+    throw Usage_error("patches samples a disk of --radius R; --fraction and --vertices do not apply");
+  if (a.trim_folds)
+    throw Usage_error("patches always samples inside each map's fold-free disk; drop --trim-folds");
+  if (a.outputs.size() != 1 || a.outputs[0].format != Output_format::npz)
+    throw Usage_error("give one output -o OUT.npz");
   return a;
 }
 

@@ -25,9 +25,11 @@ inline std::string general_help() {
          "       expmap batch MESH (--sources all|I,J,K|@FILE | --source-points FILE)\n"
          "                    (--radius R | --fraction F | --vertices K) [options]\n"
          "                    -o OUT [-o OUT ...]\n"
+         "       expmap patches MESH --radius R [--rings K] [--rays L] [options]\n"
+         "                      -o OUT.npz\n"
          "       expmap view MESH [--port P] [--host H]\n"
          "       expmap --help | expmap compute --help | expmap batch --help\n"
-         "       expmap view --help\n"
+         "       expmap patches --help | expmap view --help\n"
          "       expmap --version\n"
          "\n"
          "Computes local exponential maps (geodesic polar coordinates r, theta and\n"
@@ -38,6 +40,8 @@ inline std::string general_help() {
          "  compute   map one patch and write it as CSV, textured OBJ or SVG\n"
          "  batch     map a patch around each of many sources on all cores and write\n"
          "            them as one CSV or NumPy .npz\n"
+         "  patches   the polar patch operator of geodesic convolutional networks\n"
+         "            around each of many sources, as a SciPy sparse .npz\n"
          "  view      serve an interactive view in the web browser: click or drag\n"
          "            on the surface to place the source, compare two methods\n"
          "\n"
@@ -103,22 +107,15 @@ inline std::string numeric_option_help(const expmap::Setting_range& setting, con
                         23, head.size());
 }
 
-/// The options of the patch, the method and the input, which `compute` and
-/// `batch` share; `method_list` lists the methods, one indented line each.
-inline std::string map_options_help(const std::string& method_list) {
+/// The options of the method and the input, which every command that maps
+/// shares; `method_list` lists the methods, one indented line each.
+inline std::string method_and_input_help(const std::string& method_list,
+                                         const std::string& default_method = "heat") {
   std::ostringstream h;
   const expmap::Heat_options defaults;
   const expmap::Heat_query_options query_defaults;
-  h << "patch (exactly one):\n"
-       "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
-       "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
-       "                       1 maps the source's whole connected component\n"
-       "  --vertices K         the K >= 1 vertices nearest to the source\n"
-       "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
-       "                       the vertices nearer than the nearest flipped\n"
-       "                       triangle's farthest corner, so none is flipped\n"
-       "method:\n"
-       "  --method M           default: heat; one of\n";
+  h << "method:\n"
+       "  --method M           default: " << default_method << "; one of\n";
   h << method_list;
   h << "  --force              exact only: try a map even where its memory estimate\n"
        "                       (by the faces of its submesh: about 1 GB at 40,000,\n"
@@ -156,6 +153,20 @@ inline std::string map_options_help(const std::string& method_list) {
        "                       by collapsing and flipping edges; vertex indices in the\n"
        "                       output stay those of the file\n";
   return h.str();
+}
+
+/// The options of the patch, the method and the input, which `compute` and
+/// `batch` share.
+inline std::string map_options_help(const std::string& method_list) {
+  return "patch (exactly one):\n"
+         "  --radius R           every vertex within geodesic distance R > 0 (mesh units)\n"
+         "  --fraction F         the nearest F of all vertices, 0 < F <= 1;\n"
+         "                       1 maps the source's whole connected component\n"
+         "  --vertices K         the K >= 1 vertices nearest to the source\n"
+         "  --trim-folds         with any of them: cut each map to its fold-free disk,\n"
+         "                       the vertices nearer than the nearest flipped\n"
+         "                       triangle's farthest corner, so none is flipped\n" +
+         method_and_input_help(method_list);
 }
 
 /// `expmap compute --help`.
@@ -243,6 +254,42 @@ inline std::string batch_help(const std::string& method_list) {
          "other maps are written, and the exit status is 1. Other errors go to stderr\n"
          "as 'expmap: error: ...' with exit status 1 (runtime) or 2 (usage), and no\n"
          "output is left behind.\n";
+}
+
+/// `expmap patches --help`.
+inline std::string patches_help(const std::string& method_list) {
+  return "usage: expmap patches MESH --radius R [--rings K] [--rays L]\n"
+         "                      [--sources all|I,J,K|@FILE] [--method M] [--threads N]\n"
+         "                      [heat options as for batch] [--reference X,Y,Z]\n"
+         "                      [--no-triangulate] [--repair] -o OUT.npz\n"
+         "\n"
+         "The polar patch operator of geodesic convolutional networks: for each source,\n"
+         "the grid points rho_i = (i + 1/2) R / rings, theta_j = 2 pi j / rays of its\n"
+         "map, each with the barycentric weights of the map's triangle that holds it.\n"
+         "\n"
+         "  MESH                 triangle mesh: .off, .obj, .ply or .stl\n"
+         "  --radius R           the grid's radius R > 0 (mesh units); each source is\n"
+         "                       mapped to R plus two mean edge lengths\n"
+         "  --rings K            grid points along each ray (default: 5)\n"
+         "  --rays L             grid points around each ring (default: 16)\n"
+         "  --sources S          as for batch (default: all)\n"
+         "  --threads N          maps run on N threads (default: 0, all cores)\n" +
+         method_and_input_help(method_list, "dgpc") +
+         "output:\n"
+         "  -o, --output OUT.npz the operator in SciPy's sparse layout\n"
+         "                       (scipy.sparse.load_npz gives a CSR matrix of shape\n"
+         "                       (sources * rings * rays, vertices), row\n"
+         "                       (s * rings + i) * rays + j for ring i, ray j of source\n"
+         "                       s, columns the file's vertices), and the arrays\n"
+         "                       sources (k), sampled (k, rings, rays; 0 where a grid\n"
+         "                       point lies beyond the map's fold-free disk, past a\n"
+         "                       boundary, or its source failed) and radius\n"
+         "  -h, --help           this help\n"
+         "\n"
+         "--method defaults to dgpc here: its maps place grid points closer to the\n"
+         "exact map's than the heat method's smoothed ones (manual, section 15).\n"
+         "A source whose query fails gets 'expmap: warning: ...' and no weights; the\n"
+         "exit status is then 1.\n";
 }
 
 }  // namespace expmap_cli

@@ -278,6 +278,12 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
   return run;
 }
 
+}  // namespace
+
+#include "Patches_command.h"
+
+namespace {
+
 // The one place that knows the methods: parsing, help, dispatch and the
 // caption all read this table, so a new method is one more row.
 struct Method {
@@ -288,13 +294,16 @@ struct Method {
              const expmap::Query_options&);
   Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const Batch_sources&,
                         const expmap::Patch&, const expmap::Query_options&, Batch_output&);
+  Patches_run (*run_patches)(const Mesh&, const expmap_cli::Patches_arguments&,
+                             const std::vector<std::size_t>&, const expmap::Query_options&);
   std::string name() const { return expmap::to_string(id); }
 };
 
 template <class Method_class>
 constexpr Method method_row(expmap::Map_method id, const char* description,
                             bool takes_heat_options) {
-  return {id, description, takes_heat_options, run_one<Method_class>, run_many<Method_class>};
+  return {id,           description,          takes_heat_options, run_one<Method_class>,
+          run_many<Method_class>, run_patches<Method_class>};
 }
 
 const Method methods[] = {
@@ -333,6 +342,7 @@ std::string method_list() {
 
 std::string compute_help() { return expmap_cli::compute_help(method_list()); }
 std::string batch_help() { return expmap_cli::batch_help(method_list()); }
+std::string patches_help() { return expmap_cli::patches_help(method_list()); }
 
 // The mesh as the methods need it, and where its vertices are in the file.
 struct Input {
@@ -614,6 +624,39 @@ int batch(const Batch_arguments& a, const Method& method, const Input& input) {
   return 1;
 }
 
+int patches(const expmap_cli::Patches_arguments& a, const Method& method, const Input& input) {
+  const Batch_sources sources = batch_sources(a, input);
+  expmap::Query_options query;
+  query.reference_direction = a.reference;
+  const Patches_run run = with_repair_hint(
+      a, [&] { return method.run_patches(input.mesh, a, sources.vertices, query); });
+  const expmap::Polar_patch_operator& op = run.op;
+  write_patch_operator_npz(a.outputs[0].path, op, input.report.file_index,
+                           input.report.file_vertices);
+  std::size_t sampled = 0;
+  for (unsigned char s : op.sampled) sampled += s;
+  print_mesh_summary(a, input.mesh);
+  std::printf("method:      %s\n", run.description.empty() ? method.description
+                                                          : run.description.c_str());
+  std::printf("precompute:  %.3f s\n", run.precompute_seconds);
+  std::printf("operator:    %zu sources, %zu x %zu grid of radius %g, in %.3f s\n",
+              op.sources.size(), a.rings, a.rays, *a.radius, run.operator_seconds);
+  std::printf("sampled:     %zu of %zu grid points (%zu weights)\n", sampled, op.sampled.size(),
+              static_cast<std::size_t>(op.weights.nonZeros()));
+  std::printf("wrote:       %s\n", a.outputs[0].path.c_str());
+  std::size_t failed = 0;
+  std::fflush(stdout);
+  for (const std::string& e : op.errors)
+    if (!e.empty()) {
+      std::cerr << "expmap: warning: " << e << "\n";
+      ++failed;
+    }
+  if (failed == 0) return 0;
+  std::cerr << "expmap: error: " << failed << " of " << op.sources.size()
+            << " sources failed (see the warnings above); their grid points have no weights\n";
+  return 1;
+}
+
 int fail(const std::string& message, int status) {
   std::fflush(stdout);
   std::cerr << "expmap: error: " << message << "\n";
@@ -628,7 +671,8 @@ int main(int argc, char** argv) {
     if (args.empty()) throw Usage_error("no command given (see expmap --help)");
     if (args[0] == "-h" || args[0] == "--help") {
       std::cout << expmap_cli::general_help()
-                << "\nSee 'expmap compute --help' and 'expmap batch --help' for the options.\n";
+                << "\nSee 'expmap compute --help', 'expmap batch --help' and 'expmap patches "
+                   "--help' for the options.\n";
       return 0;
     }
     if (args[0] == "--version") {
@@ -641,6 +685,8 @@ int main(int argc, char** argv) {
       return run_command(rest, expmap_cli::parse_compute_arguments, compute_help, compute);
     if (args[0] == "batch")
       return run_command(rest, expmap_cli::parse_batch_arguments, batch_help, batch);
+    if (args[0] == "patches")
+      return run_command(rest, expmap_cli::parse_patches_arguments, patches_help, patches);
     if (args[0] == "view") {
 #ifdef EXPMAP_WITH_VIEWER
       return expmap_view::run_view_command(rest);

@@ -5,6 +5,8 @@ linear functions on a plane (reproduced exactly at every grid point) and at
 a boundary (masked, never NaN)."""
 
 import math
+import os
+import subprocess
 
 import numpy as np
 import pytest
@@ -80,3 +82,43 @@ def test_bad_grids_are_refused():
         dgpc.patch_operator([len(V)], radius=0.5)
     with pytest.raises(ValueError, match="signal must have shape"):
         dgpc.patch_operator([0], radius=0.5).patches(np.zeros(3))
+
+
+def cli():
+    path = os.environ.get("EXPMAP_CLI")
+    if not path:
+        pytest.skip("EXPMAP_CLI is not set (ctest sets it)")
+    return path
+
+
+def test_the_command_line_writes_the_same_operator_in_scipys_layout(elephant, tmp_path):
+    scipy_sparse = pytest.importorskip("scipy.sparse")
+    path, V, F = elephant
+    out = tmp_path / "patches.npz"
+    run = subprocess.run([cli(), "patches", path, "--radius", "0.05", "--rings", "4", "--rays",
+                          "8", "--sources", "0,5,77", "-o", str(out)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    weights = scipy_sparse.load_npz(out)
+    arrays = np.load(out)
+    op = expmap.GeodesicPolarCoordinates(V, F).patch_operator([0, 5, 77], radius=0.05, rings=4,
+                                                              rays=8)
+    assert weights.shape == op.weights.shape
+    assert abs(weights - op.weights).max() == 0
+    assert (arrays["sampled"].astype(bool) == op.sampled).all()
+    assert list(arrays["sources"]) == [0, 5, 77] and float(arrays["radius"]) == 0.05
+
+
+@pytest.mark.parametrize("arguments,message", [
+    (["--fraction", "0.1"], "give the grid's --radius"),
+    (["--radius", "0.05", "--vertices", "9"], "--fraction and --vertices do not apply"),
+    (["--radius", "0.05", "--rings", "0"], "--rings must be in [1, 4096]"),
+    (["--radius", "0.05", "--trim-folds"], "drop --trim-folds"),
+])
+def test_the_command_line_refuses_what_a_grid_cannot_take(elephant, tmp_path, arguments, message):
+    path = elephant[0]
+    run = subprocess.run([cli(), "patches", path] + arguments + ["-o", str(tmp_path / "p.npz")],
+                         capture_output=True, text=True)
+    assert run.returncode == 2
+    assert run.stderr.startswith("expmap: error: ") and message in run.stderr
+    assert not (tmp_path / "p.npz").exists()
