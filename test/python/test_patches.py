@@ -7,6 +7,7 @@ a boundary (masked, never NaN)."""
 import math
 import os
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -122,3 +123,17 @@ def test_the_command_line_refuses_what_a_grid_cannot_take(elephant, tmp_path, ar
     assert run.returncode == 2
     assert run.stderr.startswith("expmap: error: ") and message in run.stderr
     assert not (tmp_path / "p.npz").exists()
+
+
+def test_the_example_draws_its_patches(tmp_path):
+    pytest.importorskip("matplotlib")
+    example = os.path.join(os.path.dirname(__file__), "..", "..", "examples", "geodesic_patches.py")
+    mesh = os.path.join(os.environ.get("EXPMAP_DATA_DIR", ""), "cactus.off")
+    if not os.path.exists(mesh):
+        pytest.skip("cactus.off not found")
+    out = tmp_path / "patches.png"
+    run = subprocess.run([sys.executable, example, mesh, "--show", "2", "-o", str(out)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert out.stat().st_size > 10000
+    assert "sampled" in run.stdout
