@@ -104,6 +104,34 @@ def _map_chunk(path, method, options, patch, sources):
     return arrays
 
 
+def _patch_chunk(path, method, options, grid, sources):
+    """Task: the polar patch operator of some sources of one mesh, as arrays."""
+    op = _precomputed(path, method, options).patch_operator(sources, threads=1, **grid)
+    data, indices, indptr = op._csr
+    return {"data": data, "indices": indices, "indptr": indptr, "sampled": op.sampled,
+            "sources": np.asarray(op.sources, dtype=np.int64),
+            "errors": np.array(op.errors, dtype=str), "vertices": op.shape[1]}
+
+
+def _concatenate_patches(chunks, grid):
+    """One mesh's operator, in SciPy's CSR layout (scipy.sparse.load_npz),
+    from its chunks' operators, in chunk order."""
+    indptr = [np.zeros(1, dtype=np.int64)]
+    entries = 0
+    for c in chunks:
+        indptr.append(c["indptr"][1:] + entries)
+        entries += int(c["indptr"][-1])
+    vertices = chunks[0]["vertices"] if chunks else 0
+    out = {name: np.concatenate([c[name] for c in chunks]) for name in ("data", "indices", "sources")}
+    out["indptr"] = np.concatenate(indptr)
+    out["sampled"] = np.concatenate([c["sampled"] for c in chunks]).astype(np.uint8)
+    out["errors"] = np.concatenate([c["errors"] for c in chunks]).astype(str)
+    out["format"] = np.array("csr")
+    out["shape"] = np.array([len(out["indptr"]) - 1, vertices], dtype=np.int64)
+    out["radius"] = np.array(float(grid["radius"]))
+    return out
+
+
 def _empty_chunk():
     arrays = {name: np.zeros(0, dtype=np.int64 if name in ("sources", "vertex") else float) for name in ARRAY_NAMES}
     arrays["offsets"] = np.zeros(1, dtype=np.int64)
@@ -142,6 +170,37 @@ def _npz_paths(meshes, out_dir):
     return paths
 
 
+def _checked_arguments(meshes, sources, method, chunk_size, options, out_dir):
+    """The arguments both map_meshes and patch_operators take, checked:
+    (meshes, sources, options, npz_paths); out_dir is made."""
+    if isinstance(meshes, (str, bytes, os.PathLike)):
+        raise ValueError("meshes must be a list of mesh paths, not one path")
+    meshes = [os.fspath(m) for m in meshes]
+    if len(set(meshes)) != len(meshes):
+        raise ValueError("a mesh is listed twice")
+    if method not in METHODS:
+        raise ValueError("unknown method %r (known: %s)" % (method, ", ".join(METHODS)))
+    if not (isinstance(chunk_size, int) and chunk_size > 0):
+        raise ValueError("chunk_size must be a positive integer (got %r)" % (chunk_size,))
+    if not (isinstance(sources, str) and sources == "all") and not isinstance(sources, dict):
+        raise ValueError('sources must be "all" or a dict from mesh path to source indices')
+    if isinstance(sources, dict):
+        sources = {os.fspath(k): v for k, v in sources.items()}
+        missing = [m for m in meshes if m not in sources]
+        if missing:
+            raise ValueError("no sources given for %s" % ", ".join(missing))
+    options = dict(options or {})
+    npz_paths = None
+    if out_dir is not None:
+        if os.path.exists(out_dir) and not os.path.isdir(out_dir):
+            raise ValueError("out_dir %r exists and is not a folder" % (out_dir,))
+        npz_paths = _npz_paths(meshes, out_dir)
+        # Here, before any task: the files are written by this process, and a
+        # folder that cannot be made should fail now, not after the maps.
+        os.makedirs(out_dir, exist_ok=True)
+    return meshes, sources, options, npz_paths
+
+
 def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radius=None,
                vertices=None, out_dir=None, chunk_size=256, options=None, progress=None):
     """Local maps of many sources on many meshes, computed on a Dask cluster.
@@ -169,34 +228,49 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
     if out_dir cannot be made; a mesh that cannot be read or
     precomputed raises the worker's exception here.
     """
-    from distributed import as_completed
-
-    if isinstance(meshes, (str, bytes, os.PathLike)):
-        raise ValueError("meshes must be a list of mesh paths, not one path")
-    meshes = [os.fspath(m) for m in meshes]
-    if len(set(meshes)) != len(meshes):
-        raise ValueError("a mesh is listed twice")
-    if method not in METHODS:
-        raise ValueError("unknown method %r (known: %s)" % (method, ", ".join(METHODS)))
-    if not (isinstance(chunk_size, int) and chunk_size > 0):
-        raise ValueError("chunk_size must be a positive integer (got %r)" % (chunk_size,))
-    if not (isinstance(sources, str) and sources == "all") and not isinstance(sources, dict):
-        raise ValueError('sources must be "all" or a dict from mesh path to source indices')
-    if isinstance(sources, dict):
-        sources = {os.fspath(k): v for k, v in sources.items()}
-        missing = [m for m in meshes if m not in sources]
-        if missing:
-            raise ValueError("no sources given for %s" % ", ".join(missing))
     patch = _patch_argument(fraction, radius, vertices)
-    options = dict(options or {})
-    npz_paths = None
-    if out_dir is not None:
-        if os.path.exists(out_dir) and not os.path.isdir(out_dir):
-            raise ValueError("out_dir %r exists and is not a folder" % (out_dir,))
-        npz_paths = _npz_paths(meshes, out_dir)
-        # Here, before any task: the files are written by this process, and a
-        # folder that cannot be made should fail now, not after the maps.
-        os.makedirs(out_dir, exist_ok=True)
+    meshes, sources, options, npz_paths = _checked_arguments(meshes, sources, method, chunk_size,
+                                                             options, out_dir)
+    return _run_meshes(client, meshes, sources, method, options, chunk_size, npz_paths, progress,
+                       lambda mesh, piece, **where: client.submit(
+                           _map_chunk, mesh, method, options, patch, piece, pure=False, **where),
+                       _concatenate, _empty_chunk())
+
+
+def patch_operators(client, meshes, radius, rings=5, rays=16, sources="all", method="dgpc",
+                    out_dir=None, chunk_size=256, options=None, progress=None, reference=None):
+    """The polar patch operators (``method.patch_operator()``) of many
+    meshes, computed on a Dask cluster as map_meshes computes maps.
+
+    radius, rings, rays, reference: the grid, as in patch_operator().
+    meshes, sources, method, out_dir, chunk_size, options, progress: as in
+    map_meshes; method defaults to "dgpc" (manual, section 15).
+
+    Returns a dict from mesh path to a dict of arrays in SciPy's CSR layout
+    (``data``, ``indices``, ``indptr``, ``format``, ``shape``: give it to
+    ``scipy.sparse.csr_matrix((d["data"], d["indices"], d["indptr"]),
+    d["shape"])``) with ``sources``, ``sampled`` (sources, rings, rays),
+    ``radius`` and ``errors``; with out_dir, to ``<mesh stem>.npz``, which
+    ``scipy.sparse.load_npz`` reads. Raises as map_meshes.
+    """
+    meshes, sources, options, npz_paths = _checked_arguments(meshes, sources, method, chunk_size,
+                                                             options, out_dir)
+    grid = {"radius": radius, "rings": rings, "rays": rays, "reference": reference}
+    empty = {"data": np.zeros(0), "indices": np.zeros(0, dtype=np.int64),
+             "indptr": np.zeros(1, dtype=np.int64), "sampled": np.zeros((0, rings, rays), bool),
+             "sources": np.zeros(0, dtype=np.int64), "errors": np.zeros(0, dtype=str),
+             "vertices": 0}
+    return _run_meshes(client, meshes, sources, method, options, chunk_size, npz_paths, progress,
+                       lambda mesh, piece, **where: client.submit(
+                           _patch_chunk, mesh, method, options, grid, piece, pure=False, **where),
+                       lambda chunks: _concatenate_patches(chunks, grid), empty)
+
+
+def _run_meshes(client, meshes, sources, method, options, chunk_size, npz_paths, progress,
+                submit_chunk, concatenate, empty_chunk):
+    """The scheduling both map_meshes and patch_operators share: meshes
+    precomputed a few at a time, their sources in chunks on that worker."""
+    from distributed import as_completed
 
     # Meshes are precomputed a few at a time (one per worker, plus one so a
     # worker can start the next while its threads still map the last), the
@@ -223,7 +297,7 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
             work.add(f)
 
     def finish(mesh):
-        arrays = _concatenate([done[mesh][i] for i in range(chunks_of[mesh])])
+        arrays = concatenate([done[mesh][i] for i in range(chunks_of[mesh])])
         del done[mesh]
         if npz_paths is None:
             results[mesh] = arrays
@@ -247,16 +321,15 @@ def map_meshes(client, meshes, sources="all", method="heat", fraction=None, radi
                 done[mesh] = {}
                 total_chunks += len(pieces)
                 if not pieces:
-                    done[mesh][0] = _empty_chunk()
+                    done[mesh][0] = empty_chunk
                     chunks_of[mesh] = 1
                     finish(mesh)
                 # Earlier meshes first: a worker that takes over another's chunks
                 # then works through one mesh at a time instead of alternating
                 # between more meshes than its cache holds.
                 for number, piece in enumerate(pieces):
-                    f = client.submit(_map_chunk, mesh, method, options, patch, piece,
-                                      workers=[address], allow_other_workers=True, pure=False,
-                                      priority=-position[mesh])
+                    f = submit_chunk(mesh, piece, workers=[address], allow_other_workers=True,
+                                     priority=-position[mesh])
                     chunk_futures[f.key] = (mesh, number)
                     work.add(f)
                 continue

@@ -101,6 +101,25 @@ def test_cluster_maps_equal_single_process(meshes_and_sources, tmp_path, monkeyp
         with pytest.raises(ValueError, match="out of range"):
             expmap.dask.map_meshes(client, [elephant], sources={elephant: [0, 10**6]}, vertices=5)
 
+        # Polar patch operators, chunked over the workers: the same operator as
+        # one process's, and a file SciPy reads.
+        scipy_sparse = pytest.importorskip("scipy.sparse")
+        grid = {"radius": 0.05, "rings": 3, "rays": 8}
+        operators = expmap.dask.patch_operators(client, list(meshes_and_sources),
+                                                sources=meshes_and_sources, chunk_size=40, **grid)
+        for mesh, chosen in meshes_and_sources.items():
+            V, F = expmap.read_mesh(mesh)
+            expected = expmap.GeodesicPolarCoordinates(V, F).patch_operator(chosen, **grid)
+            got = operators[mesh]
+            weights = scipy_sparse.csr_matrix((got["data"], got["indices"], got["indptr"]),
+                                              shape=tuple(got["shape"]))
+            assert abs(weights - expected.weights).max() == 0
+            assert (got["sampled"].astype(bool) == expected.sampled).all()
+            assert list(got["sources"]) == list(chosen)
+        written = expmap.dask.patch_operators(client, [cactus], sources={cactus: [0, 7, 9]},
+                                              out_dir=str(tmp_path / "patches"), **grid)
+        assert scipy_sparse.load_npz(written[cactus]).shape == (3 * 3 * 8, 620)
+
 
 def test_worker_killed_mid_run_loses_and_duplicates_nothing(meshes_and_sources):
     with local_cluster() as cluster, distributed.Client(cluster, timeout=120) as client:
