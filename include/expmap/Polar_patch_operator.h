@@ -165,7 +165,10 @@ Sampled_points sample_polar_grid(const TriangleMesh& tm, const Local_map<VertexD
 /// fold-free disk gets the barycentric weights of the (u, v) triangle that
 /// holds it. The sources are mapped on the threads `batch` asks for, one
 /// map in memory per thread; `batch.progress` is called as for a batch.
-/// The operator is the same on any number of threads.
+/// The operator is the same on any number of threads. `references`, if
+/// not empty, gives each source its own direction of theta = 0 (e.g. a
+/// principal curvature direction, so that the patches do not depend on a
+/// global axis), in place of `query.reference_direction`.
 ///
 /// \code
 /// expmap::Geodesic_polar_coordinates<Mesh> dgpc(mesh);
@@ -173,15 +176,27 @@ Sampled_points sample_polar_grid(const TriangleMesh& tm, const Local_map<VertexD
 /// Eigen::MatrixXd patches = op.weights * signal;  // (sources * 80) x channels
 /// \endcode
 /// \throws Invalid_input for a grid that cannot be sampled, a source index
-///         out of range or more than 2^28 rows. A query that fails (e.g.
+///         out of range, more than 2^28 rows or `references` of another
+///         size than `sources`. A query that fails (e.g.
 ///         an isolated source) leaves its source's rows empty and says why
 ///         in `errors`.
 template <class TriangleMesh, class Method>
-Polar_patch_operator polar_patch_operator(const TriangleMesh& tm, const Method& method,
-                                          const std::vector<std::size_t>& sources,
-                                          const Polar_grid& grid, const Batch_options& batch = {},
-                                          typename Method::Query query = {}) {
+Polar_patch_operator polar_patch_operator(
+    const TriangleMesh& tm, const Method& method, const std::vector<std::size_t>& sources,
+    const Polar_grid& grid, const Batch_options& batch = {}, typename Method::Query query = {},
+    const std::vector<std::array<double, 3>>& references = {}) {
   checked(grid);
+  if (!references.empty() && references.size() != sources.size())
+    throw Invalid_input("give one reference direction per source (got " +
+                        std::to_string(references.size()) + " for " +
+                        std::to_string(sources.size()) + " sources)");
+  for (std::size_t s = 0; s < references.size(); ++s) {
+    const auto& d = references[s];
+    if (!std::isfinite(d[0]) || !std::isfinite(d[1]) || !std::isfinite(d[2]) ||
+        (d[0] == 0 && d[1] == 0 && d[2] == 0))
+      throw Invalid_input("the reference direction of source " + std::to_string(s) +
+                          " is zero or not finite");
+  }
   const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
   for (std::size_t s : sources)
     if (s >= n)
@@ -205,8 +220,10 @@ Polar_patch_operator polar_patch_operator(const TriangleMesh& tm, const Method& 
       sources.size(), internal::batch_thread_count(batch.threads, sources.size()),
       [&](std::size_t s) {
         try {
+          typename Method::Query own = query;
+          if (!references.empty()) own.reference_direction = references[s];
           sampled[s] = internal::sample_polar_grid(
-              tm, method.compute_by_index(sources[s], patch, query), grid);
+              tm, method.compute_by_index(sources[s], patch, own), grid);
         } catch (const std::exception& e) {
           errors[s] = internal::batch_error_message(sources[s], internal::user_message(e),
                                                     "source vertex");

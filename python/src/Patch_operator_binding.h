@@ -16,6 +16,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <array>
 #include <cstdint>
 #include <numeric>
 #include <string>
@@ -42,14 +43,29 @@ void add_patch_operator(py::class_<Bound_method<Method>>& c) {
         const expmap::Polar_grid grid{radius, index_argument(rings, "rings"),
                                       index_argument(rays, "rays")};
         expmap::checked(grid);
+        // One direction for all sources, as compute() takes it, or one per source.
+        std::vector<std::array<double, 3>> references;
+        py::object shared_reference = py::none();
+        if (!reference.is_none() && py::array::ensure(reference).ndim() == 2) {
+          const Real_array xyz = Real_array::ensure(reference);
+          if (xyz.shape(0) != static_cast<py::ssize_t>(sources.size()) || xyz.shape(1) != 3)
+            throw expmap::Invalid_input(
+                "reference must be 3 numbers or an array (sources, 3) (got shape (" +
+                std::to_string(xyz.shape(0)) + ", " + std::to_string(xyz.shape(1)) + "))");
+          for (py::ssize_t s = 0; s < xyz.shape(0); ++s)
+            references.push_back({{xyz.at(s, 0), xyz.at(s, 1), xyz.at(s, 2)}});
+        } else {
+          shared_reference = py::reinterpret_borrow<py::object>(reference);
+        }
         const typename Method::Query query =
-            query_argument<Method>("patch_operator", reference, false, settings);
+            query_argument<Method>("patch_operator", shared_reference, false, settings);
         expmap::Batch_options options = batch_options_argument(threads_object);
         options.progress = batch_progress_argument(progress);
         expmap::Polar_patch_operator op;
         {
           py::gil_scoped_release release;
-          op = expmap::polar_patch_operator(*b.mesh, *b.method, sources, grid, options, query);
+          op = expmap::polar_patch_operator(*b.mesh, *b.method, sources, grid, options, query,
+                                            references);
         }
         // Columns are the caller's rows (a split vertex's copies are its row).
         const auto entries = static_cast<py::ssize_t>(op.weights.nonZeros());
@@ -89,8 +105,10 @@ void add_patch_operator(py::class_<Bound_method<Method>>& c) {
       "``op.patches(X)`` resamples a (vertices, channels) signal into\n"
       "(sources, rings, rays, channels). The maps run on ``threads`` threads\n"
       "(0: one per core) without the GIL; ``progress(done, total)`` as for\n"
-      "compute_many; ``reference`` and the method's query settings as for\n"
-      "compute().");
+      "compute_many; the method's query settings as for compute().\n"
+      "``reference``: theta = 0, 3 numbers as for compute(), or an array\n"
+      "(sources, 3) giving each source its own (e.g. a principal curvature\n"
+      "direction, so patches do not depend on a global axis).");
 }
 
 }  // namespace

@@ -137,3 +137,23 @@ def test_the_example_draws_its_patches(tmp_path):
     assert run.returncode == 0, run.stderr
     assert out.stat().st_size > 10000
     assert "sampled" in run.stdout
+
+
+def test_a_reference_per_source_turns_each_patch_by_whole_rays():
+    V, F = plane(24)
+    sources = [i for i in range(len(V)) if max(abs(V[i, 0]), abs(V[i, 1])) < 0.4][::5]
+    dgpc = expmap.GeodesicPolarCoordinates(V, F)
+    straight = dgpc.patch_operator(sources, radius=0.3, rings=3, rays=8, reference=(1, 0, 0))
+    # Source s turned by s rays (mod 8): its patch's rays shift by as many.
+    turns = np.arange(len(sources)) % 8
+    angle = 2 * math.pi * turns / 8
+    references = np.column_stack([np.cos(angle), np.sin(angle), np.zeros(len(sources))])
+    turned = dgpc.patch_operator(sources, radius=0.3, rings=3, rays=8, reference=references)
+    f = V[:, 0] * 0.3 + V[:, 1] ** 2
+    a, b = straight.patches(f), turned.patches(f)
+    for s, k in enumerate(turns):
+        assert np.abs(np.roll(a[s], -k, axis=1) - b[s]).max() < 1e-9
+    with pytest.raises(ValueError, match="one reference direction per source|sources, 3"):
+        dgpc.patch_operator(sources, radius=0.3, reference=references[:-1])
+    with pytest.raises(ValueError, match="zero or not finite"):
+        dgpc.patch_operator(sources, radius=0.3, reference=np.zeros((len(sources), 3)))
