@@ -11,13 +11,14 @@
 
 #include <expmap/Batch.h>
 #include <expmap/Errors.h>
-#include <expmap/Fold_free_radius.h>
-#include <expmap/Fold_overs.h>
+#include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/internal/Parallel_loop.h>
 #include <expmap/internal/Uv_triangle_locator.h>
 
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/properties.h>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
@@ -122,16 +123,57 @@ struct Sampled_points {
   std::vector<std::array<double, 3>> weight;
 };
 
-/// The grid points of `grid` that `map` holds inside its fold-free disk.
-template <class TriangleMesh, class VertexDescriptor>
+/// The faces of `tm` whose three corners are in `map`, as the corners'
+/// positions in the map, each face once, from its corner nearest the
+/// source (`patch_triangles()`'s order). `position` is scratch space of
+/// `num_vertices(tm)` entries, all -1, and is left so: a lookup per corner
+/// instead of a hash, which is most of the sampling's cost otherwise.
+template <class TriangleMesh, class VertexDescriptor, class VertexIndexMap>
+void map_triangles(const TriangleMesh& tm, const Local_map<VertexDescriptor>& map,
+                   VertexIndexMap vertex_index, std::vector<int>& position,
+                   std::vector<std::array<std::size_t, 3>>& triangles) {
+  using Traits = boost::graph_traits<TriangleMesh>;
+  triangles.clear();
+  for (std::size_t i = 0; i < map.size(); ++i) position[map.indices[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < map.size(); ++i) {
+    const auto h = halfedge(map.vertices[i], tm);
+    if (h == Traits::null_halfedge()) continue;
+    for (auto f : CGAL::faces_around_target(h, tm)) {
+      if (f == Traits::null_face()) continue;
+      std::array<std::size_t, 3> corner{};
+      int k = 0;
+      bool inside = true;
+      for (auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+        const int at = k < 3 ? position[static_cast<std::size_t>(get(vertex_index, v))] : -1;
+        if (at < 0) {
+          inside = false;
+          break;
+        }
+        corner[k++] = static_cast<std::size_t>(at);
+      }
+      if (inside && k == 3 && i == std::min({corner[0], corner[1], corner[2]}))
+        triangles.push_back(corner);
+    }
+  }
+  for (std::size_t i = 0; i < map.size(); ++i) position[map.indices[i]] = -1;
+}
+
+/// The grid points of `grid` that `map` holds inside its fold-free disk
+/// (`map.fold_free_radius`, which the query found). `position` as for
+/// `map_triangles()`.
+template <class TriangleMesh, class VertexDescriptor, class VertexIndexMap>
 Sampled_points sample_polar_grid(const TriangleMesh& tm, const Local_map<VertexDescriptor>& map,
-                                 const Polar_grid& grid) {
+                                 const Polar_grid& grid, VertexIndexMap vertex_index,
+                                 std::vector<int>& position) {
   using Corners = Uv_triangle_locator::Corners;
-  const auto triangles = patch_triangles(tm, map);
+  std::vector<std::array<std::size_t, 3>> triangles;
+  map_triangles(tm, map, vertex_index, position, triangles);
+  std::vector<std::array<double, 2>> vertex_uv(map.size());
+  for (std::size_t i = 0; i < map.size(); ++i) vertex_uv[i] = map.uv(i);
   std::vector<Corners> uv(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) uv[t][k] = map.uv(triangles[t].corner[k]);
-  const double disk = map.fold_free_radius ? *map.fold_free_radius : fold_free_radius(tm, map);
+    for (int k = 0; k < 3; ++k) uv[t][k] = vertex_uv[triangles[t][k]];
+  const double disk = map.fold_free_radius ? *map.fold_free_radius : 0.0;
   double extent = 0;
   for (double r : map.distance) extent = std::max(extent, r);
   const Uv_triangle_locator locator(uv, extent);
@@ -144,7 +186,7 @@ Sampled_points sample_polar_grid(const TriangleMesh& tm, const Local_map<VertexD
       if (!found) continue;
       std::array<std::pair<std::size_t, double>, 3> corner;
       for (int k = 0; k < 3; ++k)
-        corner[k] = {map.indices[triangles[found->triangle].corner[k]], found->weight[k]};
+        corner[k] = {map.indices[triangles[found->triangle][k]], found->weight[k]};
       std::sort(corner.begin(), corner.end());
       out.point.push_back(i * grid.rays + j);
       out.corner.push_back({corner[0].first, corner[1].first, corner[2].first});
@@ -212,6 +254,7 @@ Polar_patch_operator polar_patch_operator(
   query.find_fold_free_radius = true;
   const Patch patch = Patch::geodesic_radius(grid.radius + 2 * internal::mean_edge_length(tm));
 
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(tm);
   std::vector<internal::Sampled_points> sampled(sources.size());
   std::vector<std::string> errors(sources.size());
   std::mutex progress_mutex;
@@ -222,8 +265,11 @@ Polar_patch_operator polar_patch_operator(
         try {
           typename Method::Query own = query;
           if (!references.empty()) own.reference_direction = references[s];
+          // Scratch space of each thread, kept between its sources.
+          thread_local std::vector<int> position;
+          if (position.size() != n) position.assign(n, -1);
           sampled[s] = internal::sample_polar_grid(
-              tm, method.compute_by_index(sources[s], patch, own), grid);
+              tm, method.compute_by_index(sources[s], patch, own), grid, vertex_index, position);
         } catch (const std::exception& e) {
           errors[s] = internal::batch_error_message(sources[s], internal::user_message(e),
                                                     "source vertex");
