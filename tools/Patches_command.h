@@ -5,8 +5,8 @@
 
 // `expmap patches`: the polar patch operator of a method and its .npz in
 // SciPy's sparse layout. Part of expmap_cli.cpp, which includes it after
-// make_method(), query_settings(), settings_description() and
-// check_memory(), and uses Mesh and Source from there.
+// make_method(), query_settings(), settings_description(), seconds_since()
+// and check_batch_memory(), and uses Mesh and Batch_sources from there.
 
 #include "Command_line.h"
 #include "Progress_bar.h"
@@ -18,7 +18,6 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -29,34 +28,27 @@ struct Patches_run {
   expmap::Polar_patch_operator op;
 };
 
+// The operator of the vertex sources `sources` (patches takes no points).
 template <class Method_class>
 Patches_run run_patches(const Mesh& mesh, const expmap_cli::Patches_arguments& a,
-                        const std::vector<std::size_t>& sources,
-                        const expmap::Query_options& query) {
+                        const Batch_sources& sources, const expmap::Query_options& query) {
   Patches_run run;
   auto start = std::chrono::steady_clock::now();
   const auto method = make_method<Method_class>(mesh, a);
-  run.precompute_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
-  const expmap::Polar_grid grid{*a.radius, a.rings, a.rays};
-  std::vector<Source> sampled;  // as a batch: 16 sources for the memory check
-  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
-    sampled.push_back(Mesh::Vertex_index(static_cast<Mesh::size_type>(sources[i])));
-  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
-  check_memory(method, a, sampled, expmap::Patch::geodesic_radius(*a.radius),
-               static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
+  check_batch_memory(method, a, sources, expmap::Patch::geodesic_radius(*a.radius));
 
   start = std::chrono::steady_clock::now();
   expmap_cli::Progress_bar bar(sources.size());
   expmap::Batch_options options;
   options.threads = a.threads;
   options.progress = [&](std::size_t done, std::size_t) { bar.update(done); };
-  run.op = expmap::polar_patch_operator(mesh, method, sources, grid, options,
+  run.op = expmap::polar_patch_operator(mesh, method, sources.vertices,
+                                        {*a.radius, a.rings, a.rays}, options,
                                         query_settings<Method_class>(a, query));
   bar.finish();
-  run.operator_seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  run.operator_seconds = seconds_since(start);
   return run;
 }
 

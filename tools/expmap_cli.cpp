@@ -230,6 +230,21 @@ expmap::Batch_result<Mesh::Vertex_index> compute_part(const Method_class& method
       patch, options, query);
 }
 
+// check_memory() for a batch of `sources`: at 16 of them (radius patches
+// differ from source to source), as many maps at once as it runs threads.
+template <class Method_class>
+void check_batch_memory(const Method_class& method, const Batch_arguments& a,
+                        const Batch_sources& sources, const expmap::Patch& patch) {
+  std::vector<Source> sampled;
+  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
+    sampled.push_back(sources.points.empty()
+                          ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(sources.vertices[i])))
+                          : Source(sources.points[i]));
+  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
+  check_memory(method, a, sampled, patch,
+               static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
+}
+
 // Precomputes and maps every source, a chunk of sources at a time: a chunk
 // holds about `rows_in_flight` rows (the first, small one measures the patch
 // size), so memory does not grow with the number of sources.
@@ -243,14 +258,7 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
   const auto method = make_method<Method_class>(mesh, a);
   run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
-  std::vector<Source> sampled;  // 16 sources: radius patches differ from source to source
-  for (std::size_t i = 0; i < sources.size(); i += std::max<std::size_t>(1, sources.size() / 16))
-    sampled.push_back(sources.points.empty()
-                          ? Source(Mesh::Vertex_index(static_cast<Mesh::size_type>(sources.vertices[i])))
-                          : Source(sources.points[i]));
-  const unsigned threads = a.threads ? a.threads : std::max(1u, std::thread::hardware_concurrency());
-  check_memory(method, a, sampled, patch,
-               static_cast<unsigned>(std::min<std::size_t>(threads, sources.size())));
+  check_batch_memory(method, a, sources, patch);
 
   start = std::chrono::steady_clock::now();
   expmap_cli::Progress_bar bar(sources.size());
@@ -295,7 +303,7 @@ struct Method {
   Batch_run (*run_many)(const Mesh&, const Batch_arguments&, const Batch_sources&,
                         const expmap::Patch&, const expmap::Query_options&, Batch_output&);
   Patches_run (*run_patches)(const Mesh&, const expmap_cli::Patches_arguments&,
-                             const std::vector<std::size_t>&, const expmap::Query_options&);
+                             const Batch_sources&, const expmap::Query_options&);
   std::string name() const { return expmap::to_string(id); }
 };
 
@@ -629,7 +637,7 @@ int patches(const expmap_cli::Patches_arguments& a, const Method& method, const 
   expmap::Query_options query;
   query.reference_direction = a.reference;
   const Patches_run run = with_repair_hint(
-      a, [&] { return method.run_patches(input.mesh, a, sources.vertices, query); });
+      a, [&] { return method.run_patches(input.mesh, a, sources, query); });
   const expmap::Polar_patch_operator& op = run.op;
   write_patch_operator_npz(a.outputs[0].path, op, input.report.file_index,
                            input.report.file_vertices);

@@ -92,15 +92,7 @@ inline std::array<double, 2> normalized_gradient(const Divergence_stencil& stenc
 /// constant contributes nothing.
 inline std::array<double, 3> normalized_gradient_divergence(const Divergence_stencil& stencil,
                                                             const std::array<double, 3>& u) {
-  std::array<double, 2> unit = stencil.unnormalized_gradient(u);
-  const double square = unit[0] * unit[0] + unit[1] * unit[1];
-  if (std::isnormal(square)) {
-    const double inverse_length = 1.0 / std::sqrt(square);
-    unit[0] *= inverse_length;
-    unit[1] *= inverse_length;
-  } else {
-    unit = rescaled_unit_gradient(stencil, u);
-  }
+  const std::array<double, 2> unit = normalized_gradient(stencil, u);
   std::array<double, 3> div;
   for (int a = 0; a < 3; ++a)
     div[a] = unit[0] * stencil.corner_weight[a][0] + unit[1] * stencil.corner_weight[a][1];
