@@ -15,6 +15,7 @@
 #include <expmap/Precomputation_progress.h>
 #include <expmap/Setting_ranges.h>
 
+#include <cstddef>
 #include <string>
 
 namespace expmap {
@@ -92,6 +93,18 @@ struct Heat_options {
   /// separators (meshes above about 100k vertices): fewer entries read per
   /// query. 0 keeps every block dense. Range: `setting_ranges`.
   double poisson_compression_tolerance = 1e-14;
+  /// On meshes of at least this many vertices the constructor factors
+  /// nothing: a query is answered on the factors of a geodesic ball a few
+  /// patch radii wide around its source (a subdomain), built the first time
+  /// a query needs it and kept for the queries around it. Patches whose
+  /// ball would hold more than 262,144 vertices or a quarter of the mesh,
+  /// and vertex-set patches, factor the whole mesh when first asked. 0
+  /// uses subdomains on every mesh; `SIZE_MAX` never (manual, section 2,
+  /// "Subdomains").
+  std::size_t subdomain_min_vertices = 200000;
+  /// The bytes the cached subdomains may hold: beyond it the least
+  /// recently used are dropped (the one a query has just built stays).
+  std::size_t subdomain_cache_bytes = std::size_t(1) << 30;
   /// Reports the precomputation's steps as it runs (see
   /// `Precomputation_callback`); empty: no reports. Only the constructor
   /// calls it: the object keeps no copy (its `options()` have none).

@@ -60,6 +60,14 @@ inline constexpr Setting_range poisson_compression_tolerance{
     "the Poisson factor's low-rank rows below its large separators truncated to this relative "
     "tolerance, so queries on meshes above about 100k vertices read fewer entries; 0 keeps them "
     "dense"};
+inline constexpr Setting_range subdomain_min_vertices{
+    "subdomain_min_vertices", 0, true, unbounded, false, "at least 0",
+    "meshes of at least this many vertices factor nothing up front: a query solves on a geodesic "
+    "ball a few patch radii wide around its source, factored when first needed and cached; 0 on "
+    "every mesh"};
+inline constexpr Setting_range subdomain_cache_bytes{
+    "subdomain_cache_bytes", 0, true, unbounded, false, "at least 0",
+    "the bytes the cached subdomains may hold; beyond it the least recently used are dropped"};
 inline constexpr Setting_range region_growth{
     "region_growth", 1, true, unbounded, false, "at least 1",
     "a query solves on a region this many times larger (in vertices) than its patch; larger "

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <unordered_map>
 #include <utility>
@@ -360,13 +361,22 @@ std::pair<double, double> largest_changes(const Map& a, const Map& b) {
 // edges opposite obtuse angles break), its vertices moved at random by up
 // to 0.3 of the spacing (regular vertices give exactly tied distances,
 // which round-off may order either way).
+// The whole mesh's factors, where pruning and the Poisson factor's
+// compression act; meshes this large answer small patches on subdomains
+// by default.
+expmap::Heat_options whole_mesh_factors() {
+  expmap::Heat_options options;
+  options.subdomain_min_vertices = std::numeric_limits<std::size_t>::max();
+  return options;
+}
+
 BOOST_AUTO_TEST_CASE(pruned_heat_solves_change_nothing_but_the_work) {
   Surface_mesh mesh;
   make_jittered_torus(mesh);
   const std::size_t vertex_count = num_vertices(mesh);
   expmap::Heat_query_options unpruned;
   unpruned.pruning_tolerance = 0;
-  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh, whole_mesh_factors());
   for (const std::size_t source : {std::size_t{1000}, vertex_count / 2 + 77})
     for (const double fraction : {0.001, 0.004, 0.02}) {
       // A count patch, and a radius patch of its radius (its region found
@@ -414,7 +424,7 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
   expmap_analytic::soup_to_mesh(tube, mesh);
   expmap::Heat_query_options unpruned;
   unpruned.pruning_tolerance = 0;
-  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh);
+  const expmap::Heat_exponential_map<Surface_mesh> heat(mesh, whole_mesh_factors());
   for (const std::size_t source :
        {std::size_t{around * 50 + 1}, static_cast<std::size_t>(num_vertices(mesh) / 2 + 3)}) {
     const auto a = heat.compute_by_index(source, expmap::Patch::fraction(0.004));
@@ -440,9 +450,10 @@ BOOST_AUTO_TEST_CASE(pruned_heat_solves_catch_a_too_bold_threshold) {
 BOOST_AUTO_TEST_CASE(compressed_poisson_rows_change_nothing_but_the_work) {
   Surface_mesh mesh;
   make_jittered_torus(mesh);
-  expmap::Heat_options dense_options;
+  expmap::Heat_options dense_options = whole_mesh_factors();
   dense_options.poisson_compression_tolerance = 0;
-  const expmap::Heat_exponential_map<Surface_mesh> compressed(mesh), dense(mesh, dense_options);
+  const expmap::Heat_exponential_map<Surface_mesh> compressed(mesh, whole_mesh_factors()),
+      dense(mesh, dense_options);
   BOOST_TEST_MESSAGE(Inspection::poisson_compressed_supernodes(compressed)
                      << " Poisson supernodes with rows below in low-rank form");
   BOOST_TEST_REQUIRE(Inspection::poisson_compressed_supernodes(compressed) > 0u);

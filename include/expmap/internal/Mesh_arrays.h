@@ -44,14 +44,22 @@ struct Mesh_arrays {
   double mean_edge_length = 0;
   int max_degree = 0;
   /// Empty unless the vertices were renumbered (`renumbered_mesh_arrays`):
-  /// then the index in the user's mesh of each vertex, and its inverse.
+  /// then the index in the user's mesh of each vertex, and its inverse. A
+  /// part of a mesh (a subdomain) has no inverse: its `original_index` is
+  /// increasing and searched.
   std::vector<int> original_index, index_of_original;
 
   std::size_t number_of_vertices() const { return point.size(); }
   /// The vertex an index of the user's mesh (the order of `vertices(tm)`)
-  /// is stored as, and back.
+  /// is stored as (-1 if a part of the mesh does not hold it), and back.
   int from_original(std::size_t v) const {
-    return index_of_original.empty() ? static_cast<int>(v) : index_of_original[v];
+    if (!index_of_original.empty()) return index_of_original[v];
+    if (original_index.empty()) return static_cast<int>(v);
+    const auto it =
+        std::lower_bound(original_index.begin(), original_index.end(), static_cast<int>(v));
+    return it != original_index.end() && *it == static_cast<int>(v)
+               ? static_cast<int>(it - original_index.begin())
+               : -1;
   }
   std::size_t to_original(int v) const {
     return original_index.empty() ? static_cast<std::size_t>(v)

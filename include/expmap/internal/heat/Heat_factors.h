@@ -156,18 +156,30 @@ Localized_cholesky_solver factor_locally(const Sparse_matrix& A, const char* sys
   return Localized_cholesky_solver(solver.factor_view(), precision);
 }
 
-// Whether A has no positive off-diagonal entry. Interior edges of an
-// intrinsic Delaunay triangulation have nonnegative cotan weights (up to its
-// flip slack, 1e-12, and rounding); a boundary edge opposite an obtuse angle
+// Whether A has no positive off-diagonal entry, leaving out those between
+// two vertices `skip` marks (if not empty). Interior edges of an intrinsic
+// Delaunay triangulation have nonnegative cotan weights (up to its flip
+// slack, 1e-12, and rounding); a boundary edge opposite an obtuse angle
 // has a negative one.
-inline bool is_m_matrix(const Sparse_matrix& A) {
+inline bool is_m_matrix(const Sparse_matrix& A, const std::vector<char>& skip = {}) {
   const Eigen::VectorXd diagonal = A.diagonal();
   for (int k = 0; k < A.outerSize(); ++k)
     for (Sparse_matrix::InnerIterator it(A, k); it; ++it)
-      if (it.row() != it.col() && it.value() > 1e-12 * std::sqrt(diagonal[it.row()] * diagonal[k]))
+      if (it.row() != it.col() && it.value() > 1e-12 * std::sqrt(diagonal[it.row()] * diagonal[k]) &&
+          (skip.empty() || !skip[static_cast<std::size_t>(k)] ||
+           !skip[static_cast<std::size_t>(it.row())]))
         return false;
   return true;
 }
+
+/// What a subdomain's factorization takes from the whole mesh rather than
+/// from its own topology: the vertices on the whole mesh's long boundary
+/// loops (empty if none), and the cut, which is no boundary of the surface
+/// (its obtuse corners do not keep the heat matrix from being an M-matrix
+/// where queries read it: their regions stay clear of the cut).
+struct Subdomain_topology {
+  std::vector<char> long_boundary, is_cut;
+};
 
 // One vertex per connected component, pinned to potential 0 in the Poisson
 // system (it is singular by a constant per component).
@@ -187,9 +199,12 @@ inline std::vector<char> pinned_vertices(const Mesh_arrays& mesh) {
 /// The precomputation: operators of the (intrinsic Delaunay) triangulation
 /// of `mesh` and the factors of the heat matrix A = M + tL, of the Poisson
 /// matrix L and, on meshes with a boundary, of A with Dirichlet boundary
-/// rows. `options` must be `checked()`.
+/// rows. `options` must be `checked()`; `subdomain` is given for a
+/// subdomain. (The Poisson system's pinned vertex may be anywhere, as on a
+/// subdomain: a divergence sums to zero, so it moves no distance.)
 template <class Solver>
-Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& options) {
+Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& options,
+                                   const Subdomain_topology* subdomain = nullptr) {
   Heat_factors f;
   report(options, Precomputation_step::intrinsic_delaunay);
   Intrinsic_triangulation tri = mesh.intrinsic_triangulation();
@@ -223,7 +238,7 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
     make_identity_row(A, identity_rows);
     report(options, Precomputation_step::heat_factorization);
     f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
-    f.heat_is_m_matrix = is_m_matrix(A);
+    f.heat_is_m_matrix = subdomain ? is_m_matrix(A, subdomain->is_cut) : is_m_matrix(A);
     if (f.heat_is_m_matrix) {
       const Eigen::VectorXd diagonal = A.diagonal();
       f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
@@ -233,7 +248,9 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
     // Loops shorter than the heat's length scale sqrt(t) are left out: such
     // a pinhole barely changes the Neumann heat, while zero heat on it is a
     // sink (ChineseDragon-10kv's three-vertex holes).
-    f.is_boundary = vertices_on_long_boundary_loops(mesh, std::sqrt(f.time_step));
+    f.is_boundary =
+        subdomain ? subdomain->long_boundary
+                  : vertices_on_long_boundary_loops(mesh, std::sqrt(f.time_step));
     if (f.has_boundary()) {
       std::vector<int> dirichlet_rows = identity_rows;
       for (std::size_t v = 0; v < f.is_boundary.size(); ++v)
