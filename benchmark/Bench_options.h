@@ -64,6 +64,10 @@ Figs. 7 and 8): query time against patch fraction and against mesh size.
   --poisson-compression T  Heat_options::poisson_compression_tolerance
                            (default: the library's; 0 keeps the Poisson
                            factor dense)
+  --subdomain-min-vertices N
+                           Heat_options::subdomain_min_vertices (default: the
+                           library's; a number above the mesh's size factors
+                           the whole mesh)
   --csv OUT                one row per mesh, method and fraction
   --stats CSV2             one row per mesh: precompute time, peak memory,
                            factor sizes
@@ -93,6 +97,7 @@ struct Bench_options {
   expmap::Factor_precision factor_precision = expmap::Heat_options().factor_precision;
   int query_threads = 1;
   double poisson_compression = -1;  // negative: the library's default
+  std::size_t subdomain_min_vertices = expmap::Heat_options().subdomain_min_vertices;
   std::string csv, stats, detail;
   bool help = false;
 };
@@ -201,6 +206,8 @@ inline Bench_options parse_bench_options(int argc, char** argv) {
       o.poisson_compression =
           in_range(arg, expmap::setting_ranges::poisson_compression_tolerance,
                    parse_double(arg, value));
+    } else if (arg == "--subdomain-min-vertices") {
+      o.subdomain_min_vertices = parse_count(arg, value);
     } else if (arg == "--csv") {
       o.csv = value;
     } else if (arg == "--stats") {

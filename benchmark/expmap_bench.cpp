@@ -150,6 +150,9 @@ struct Mesh_statistics {
   double factor_nonzeros = nan_value;
   double mesh_rss_mb = nan_value;  // resident after loading, before precompute
   bool hwm_reset = false;
+  double first_map_s = nan_value;        // precompute and the first heat query
+  double query_peak_rss_mb = nan_value;  // peak once all queries ran
+  double subdomain_mb = nan_value;       // cached subdomains at the end
 };
 
 /// A mesh to benchmark: its name and how to get it.
@@ -327,12 +330,13 @@ class Benchmark {
          "queries,failures,solve_floor_ratio,retried");
     open(m_stats, options.stats,
          "mesh,vertices,faces,precompute_s,peak_rss_mb,heat_tree_height,poisson_tree_height,"
-         "factor_nonzeros,mesh_rss_mb,hwm_reset");
+         "factor_nonzeros,mesh_rss_mb,hwm_reset,first_map_s,query_peak_rss_mb,subdomain_mb");
     open(m_detail, options.detail,
          "mesh,method,fraction,source,patch_vertices,ms,forward_nodes,backward_nodes,"
          "factor_entries,stream_floor_ms,solve_ms,region_retries");
     if (options.time_factor > 0) m_heat_options.time_factor = options.time_factor;
     m_heat_options.factor_precision = options.factor_precision;
+    m_heat_options.subdomain_min_vertices = options.subdomain_min_vertices;
     if (options.poisson_compression >= 0)
       m_heat_options.poisson_compression_tolerance = options.poisson_compression;
     m_heat_query.query_threads = options.query_threads;
@@ -379,6 +383,16 @@ class Benchmark {
       heat = std::make_unique<Heat>(mesh, m_heat_options);
       st.precompute_s = watch.seconds();
       st.peak_rss_mb = peak_rss_mib();
+      // The first map, cold: on subdomains it factors the first one.
+      heat->compute_by_index(sources.front(), expmap::Patch::fraction(m_options.fractions.front()),
+                             m_heat_query);
+      st.first_map_s = watch.seconds();
+    }
+    if (heat && heat->uses_subdomains()) {
+      std::cout << "heat precompute " << fixed(st.precompute_s, 2) << " s (queries on subdomains), "
+                << "first map (fraction " << fmt(m_options.fractions.front(), 4) << ") after "
+                << fixed(st.first_map_s, 2) << " s, t = " << fmt(heat->time_step(), 4) << "\n";
+    } else if (heat) {
       st.heat_tree_height = Inspection::heat_tree_height(*heat);
       st.poisson_tree_height = Inspection::poisson_tree_height(*heat);
       st.factor_nonzeros = static_cast<double>(Inspection::factor_entries(*heat));
@@ -389,15 +403,7 @@ class Benchmark {
                 << st.poisson_tree_height << ", factor entries " << Inspection::factor_entries(*heat)
                 << ", Poisson supernodes with rows below in low-rank form "
                 << Inspection::poisson_compressed_supernodes(*heat) << ", t = " << fmt(heat->time_step(), 4)
-                << "\n";
-    }
-    m_mesh_statistics.push_back(st);
-    if (m_stats.is_open()) {
-      m_stats << st.mesh << "," << st.vertices << "," << st.faces << "," << fmt(st.precompute_s)
-              << "," << fmt(st.peak_rss_mb) << "," << fmt(st.heat_tree_height) << ","
-              << fmt(st.poisson_tree_height) << "," << fmt(st.factor_nonzeros, 12) << ","
-              << fmt(st.mesh_rss_mb) << "," << (st.hwm_reset ? 1 : 0) << "\n"
-              << std::flush;
+                << ", first map after " << fixed(st.first_map_s, 2) << " s\n";
     }
 
     const std::size_t n = st.vertices;
@@ -504,6 +510,18 @@ class Benchmark {
         }
         rows.push_back(summarize(job.name, n, method, f, selected, patch_override));
       }
+    }
+    st.query_peak_rss_mb = peak_rss_mib();
+    if (heat) st.subdomain_mb = static_cast<double>(heat->subdomain_bytes()) / (1 << 20);
+    m_mesh_statistics.push_back(st);
+    if (m_stats.is_open()) {
+      m_stats << st.mesh << "," << st.vertices << "," << st.faces << "," << fmt(st.precompute_s)
+              << "," << fmt(st.peak_rss_mb) << "," << fmt(st.heat_tree_height) << ","
+              << fmt(st.poisson_tree_height) << "," << fmt(st.factor_nonzeros, 12) << ","
+              << fmt(st.mesh_rss_mb) << "," << (st.hwm_reset ? 1 : 0) << ","
+              << fmt(st.first_map_s) << "," << fmt(st.query_peak_rss_mb) << ","
+              << fmt(st.subdomain_mb) << "\n"
+              << std::flush;
     }
     print_mesh_table(rows);
     write_rows(job.name, rows, records);
@@ -620,12 +638,14 @@ class Benchmark {
 
     std::cout << "\n==== summary ====\n";
     std::cout << pad("mesh", 18, true) << pad("vertices", 10) << pad("faces", 10)
-              << pad("precompute s", 14) << pad("peak RSS MiB", 14) << pad("tree h/P", 12)
-              << pad("factor nnz", 13) << "\n";
+              << pad("precompute s", 14) << pad("first map s", 13) << pad("peak RSS MiB", 14)
+              << pad("query peak MiB", 16) << pad("tree h/P", 12) << pad("factor nnz", 13) << "\n";
     for (const auto& s : m_mesh_statistics)
       std::cout << pad(s.mesh, 18, true) << pad(std::to_string(s.vertices), 10)
                 << pad(std::to_string(s.faces), 10) << pad(fixed(s.precompute_s, 2), 14)
+                << pad(fixed(s.first_map_s, 2), 13)
                 << pad(fixed(s.peak_rss_mb, 1) + (s.hwm_reset ? "" : "*"), 14)
+                << pad(fixed(s.query_peak_rss_mb, 1), 16)
                 << pad(fixed(s.heat_tree_height, 0) + "/" + fixed(s.poisson_tree_height, 0), 12)
                 << pad(fixed(s.factor_nonzeros, 0), 13) << "\n";
     bool any_unreset = false;

@@ -34,10 +34,11 @@ Patches_run run_patches(const Mesh& mesh, const expmap_cli::Patches_arguments& a
                         const Batch_sources& sources, const expmap::Query_options& query) {
   Patches_run run;
   auto start = std::chrono::steady_clock::now();
-  const auto method = make_method<Method_class>(mesh, a);
+  const expmap::Patch patch = expmap::Patch::geodesic_radius(*a.radius);
+  const auto method = make_method<Method_class>(mesh, a, patch);
   run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
-  check_batch_memory(method, a, sources, expmap::Patch::geodesic_radius(*a.radius));
+  check_batch_memory(method, a, sources, patch);
 
   start = std::chrono::steady_clock::now();
   expmap_cli::Progress_bar bar(sources.size());

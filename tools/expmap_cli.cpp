@@ -121,18 +121,22 @@ expmap::Heat_query_options query_settings<Heat>(const Compute_arguments& a,
   return query;
 }
 
-// How a method is built from the command line: from the mesh alone, or
-// for the heat method with its settings.
+// How a method is built from the command line for maps of `patch`: from
+// the mesh alone, or for the heat method with its settings (and, on a
+// large mesh whose maps of `patch` need the whole mesh's factors, those,
+// with their progress shown).
 template <class Method_class>
-Method_class make_method(const Mesh& mesh, const Compute_arguments&) {
+Method_class make_method(const Mesh& mesh, const Compute_arguments&, const expmap::Patch&) {
   return Method_class(mesh);
 }
 template <>
-Heat make_method<Heat>(const Mesh& mesh, const Compute_arguments& a) {
+Heat make_method<Heat>(const Mesh& mesh, const Compute_arguments& a, const expmap::Patch& patch) {
   expmap::Heat_options options = heat_options(a);
   expmap_cli::Precomputation_line line;
   options.progress = line.callback();
-  return Heat(mesh, options);
+  Heat heat(mesh, options);
+  if (heat.may_factor_whole_mesh(patch)) heat.factor_whole_mesh(line.callback());
+  return heat;
 }
 
 // The method's settings in words for the summary and the SVG caption; ""
@@ -190,7 +194,7 @@ void check_memory(const expmap::Exact_exponential_map<Mesh>& method, const Compu
 template <class Method_class>
 Run run_one(const Mesh& mesh, const Compute_arguments& a, const Source& source,
             const expmap::Patch& patch, const expmap::Query_options& query) {
-  Run run = timed_run([&] { return make_method<Method_class>(mesh, a); },
+  Run run = timed_run([&] { return make_method<Method_class>(mesh, a, patch); },
                       [&](const Method_class& m) { check_memory(m, a, {source}, patch, 1); }, source,
                       patch, query_settings<Method_class>(a, query));
   run.description = settings_description<Method_class>(a);
@@ -255,7 +259,7 @@ Batch_run run_many(const Mesh& mesh, const Batch_arguments& a, const Batch_sourc
   const std::size_t rows_in_flight = std::size_t(1) << 22;
   Batch_run run;
   auto start = std::chrono::steady_clock::now();
-  const auto method = make_method<Method_class>(mesh, a);
+  const auto method = make_method<Method_class>(mesh, a, patch);
   run.precompute_seconds = seconds_since(start);
   run.description = settings_description<Method_class>(a);
   check_batch_memory(method, a, sources, patch);

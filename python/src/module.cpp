@@ -441,13 +441,16 @@ void bind_heat(py::module_& m) {
       m, "HeatExponentialMap",
       "The smoothed exponential map of Herholz & Alexa (Computer Graphics Forum\n"
       "2019): distances and angles from heat diffusion, by localized solves on\n"
-      "Cholesky factors of the whole mesh, computed once at construction.\n\n"
+      "Cholesky factors of the whole mesh, computed once at construction, or on\n"
+      "large meshes of geodesic balls around the sources, factored as queries\n"
+      "need them.\n\n"
       "    heat = expmap.HeatExponentialMap(V, F)\n"
       "    local = heat.compute(0, fraction=0.05)\n"
       "    local.uv  # n x 2, the patch vertices local.vertices, nearest first\n");
   c.def(py::init([](py::handle vertices, py::handle faces, double time_factor,
                     py::handle laplacian, py::handle vertex_area, py::handle factor_precision,
                     py::handle regularization, double poisson_compression_tolerance,
+                    std::size_t subdomain_min_vertices, std::size_t subdomain_cache_bytes,
                     py::object progress, const py::kwargs& rest) {
           for (auto item : rest) {
             const std::string key = py::str(item.first);
@@ -466,6 +469,8 @@ void bind_heat(py::module_& m) {
           options.regularization =
               enum_argument<expmap::Poisson_regularization>(regularization, "regularization");
           options.poisson_compression_tolerance = poisson_compression_tolerance;
+          options.subdomain_min_vertices = subdomain_min_vertices;
+          options.subdomain_cache_bytes = subdomain_cache_bytes;
           if (!progress.is_none()) {
             if (!PyCallable_Check(progress.ptr()))
               throw py::type_error("progress must be callable as progress(step, fraction) (got " +
@@ -490,6 +495,8 @@ void bind_heat(py::module_& m) {
         py::arg("factor_precision") = defaults.factor_precision,
         py::arg("regularization") = defaults.regularization,
         py::arg("poisson_compression_tolerance") = defaults.poisson_compression_tolerance,
+        py::arg("subdomain_min_vertices") = defaults.subdomain_min_vertices,
+        py::arg("subdomain_cache_bytes") = defaults.subdomain_cache_bytes,
         py::arg("progress") = py::none(),
         std::string("Precomputes operators and factorizations of the mesh (vertices: float\n"
         "array n x 3; faces: integer array m x 3, made a mesh as for\n"
@@ -501,6 +508,10 @@ void bind_heat(py::module_& m) {
          enum_setting_doc("regularization", "PoissonRegularization", defaults.regularization) +
          numeric_setting_doc(ranges::poisson_compression_tolerance,
                              expmap::setting_value_text(defaults.poisson_compression_tolerance)) +
+         numeric_setting_doc(ranges::subdomain_min_vertices,
+                             std::to_string(defaults.subdomain_min_vertices)) +
+         numeric_setting_doc(ranges::subdomain_cache_bytes,
+                             std::to_string(defaults.subdomain_cache_bytes)) +
         "progress: None, or a callable progress(step, fraction) called at the start\n"
         "    of each step of the precomputation with its name and the estimated\n"
         "    share of the time done before it, and at the end with ('done', 1.0);\n"
@@ -534,6 +545,34 @@ void bind_heat(py::module_& m) {
   c.def_property_readonly(
       "mean_edge_length", [](const Bound& b) { return b.method->mean_edge_length(); },
       "Mean edge length h of the mesh.");
+  c.def_property_readonly(
+      "uses_subdomains", [](const Bound& b) { return b.method->uses_subdomains(); },
+      "Whether queries solve on geodesic balls around their sources (meshes of\n"
+      "subdomain_min_vertices or more) instead of the whole mesh's factors.");
+  c.def_property_readonly(
+      "subdomain_bytes", [](const Bound& b) { return b.method->subdomain_bytes(); },
+      "Bytes the cached subdomains hold now (bounded by subdomain_cache_bytes).");
+  c.def(
+      "factor_whole_mesh",
+      [](const Bound& b, py::object progress) {
+        if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+          throw py::type_error("progress must be callable as progress(step, fraction) (got " +
+                               py::repr(progress).cast<std::string>() + ")");
+        expmap::Precomputation_callback callback;
+        if (!progress.is_none())
+          callback = [handle = py::handle(progress)](const char* step, double fraction) {
+            py::gil_scoped_acquire gil;
+            handle(step, fraction);
+          };
+        py::gil_scoped_release release;
+        b.method->factor_whole_mesh(callback);
+      },
+      py::arg("progress") = py::none(),
+      "factor_whole_mesh(progress=None)\n\n"
+      "On subdomains (uses_subdomains), factors the whole mesh now, as the first\n"
+      "query with a large or vertex-set patch would (a minute on millions of\n"
+      "vertices), reporting its steps to progress(step, fraction) as the\n"
+      "constructor does; does nothing once it is factored.");
   c.def(
       "near_source_blend_at",
       [](const Bound& b, py::handle source, const py::kwargs& settings) {

@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <type_traits>
 #include <string>
@@ -126,6 +127,10 @@ inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_fa
   expmap::Heat_options options;
   options.time_factor = time_factor;
   options.progress = progress;
+  // The whole mesh's factors, with their progress on the page, on any mesh:
+  // the memory budget (doc/viewer.md) counts a heat method's bytes once
+  // built, which a method on subdomains would exceed as its queries grow it.
+  options.subdomain_min_vertices = std::numeric_limits<std::size_t>::max();
   return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
 }
 template <class Method>
