@@ -238,8 +238,9 @@ class Heat_exponential_map
   };
 
   // The query `q` (checked on the whole mesh) from its source vertex, or
-  // from `point` if not null: on the smallest subdomain whose region stays
-  // clear of its cut, else on the whole mesh.
+  // from `point` if not null: on its ball's subdomain (Subdomain_cache.h),
+  // one twice as wide while its region reaches the cut, else on the whole
+  // mesh.
   Result answer(const Query& query, const internal::Checked_query& q, const Patch& patch,
                 const internal::Point_source* point) const {
     if (m_subdomains && patch.kind() != Patch::Kind::vertex_set &&
