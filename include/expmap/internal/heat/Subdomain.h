@@ -22,7 +22,6 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -43,7 +42,6 @@ constexpr double subdomain_heat_margin = 5;
 /// center, in increasing order.
 struct Ball {
   int center = -1;
-  double radius = 0;  // infinite for a ball that is its whole component
   std::vector<int> vertex;
 };
 
@@ -83,16 +81,13 @@ struct Ball_search {
   Ball ball(const Mesh_arrays& m, int c, double radius, std::size_t most) {
     Ball b;
     b.center = c;
-    b.radius = radius;
-    bool inside = true, too_large = false;
+    bool too_large = false;
     grow_region(m, c, in_region, seen, tentative, region, [&](int, double d, std::size_t size) {
-      inside = d <= radius;
+      const bool inside = d <= radius;
       too_large = inside && size >= most;
       return inside && !too_large;
     });
     if (too_large) return {};
-    // Every vertex of the component within the radius.
-    if (inside) b.radius = std::numeric_limits<double>::infinity();
     b.vertex = region;
     std::sort(b.vertex.begin(), b.vertex.end());
     return b;

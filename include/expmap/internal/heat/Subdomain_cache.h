@@ -11,7 +11,8 @@
 // holds s's ball. Sources near one another share a center, so a batch
 // walked in locality order, or a decal moved across the surface, factors
 // each ball once; and the ball depends on s and D alone, so a map is the
-// same whatever queries came before and on any number of threads.
+// same whatever queries came before (across threads up to the round-off of
+// the ball's factorization).
 
 #include <expmap/Heat_options.h>
 #include <expmap/Patch.h>
@@ -114,14 +115,10 @@ class Subdomain_cache {
            static_cast<double>(most_ball_vertices(whole));
   }
 
-  /// Bytes the cached subdomains hold, and the bound they are kept within.
+  /// Bytes the cached subdomains hold.
   std::size_t bytes() const {
     std::lock_guard<std::mutex> lock(m_mutex);
     return m_bytes;
-  }
-  std::size_t number_of_subdomains() const {
-    std::lock_guard<std::mutex> lock(m_mutex);
-    return m_cached.size();
   }
 
  private:
