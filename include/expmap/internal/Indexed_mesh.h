@@ -3,6 +3,7 @@
 #ifndef EXPMAP_INTERNAL_INDEXED_MESH_H
 #define EXPMAP_INTERNAL_INDEXED_MESH_H
 
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Mesh_arrays.h>
 
 #include <CGAL/Default.h>
@@ -11,7 +12,9 @@
 
 #include <boost/graph/graph_traits.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -37,21 +40,24 @@ struct Indexed_mesh {
   Indexed_mesh(const TriangleMesh& tm, Vertex_point_map vpm)
       : vertex_index(CGAL::get_initialized_vertex_index_map(tm)),
         face_index(CGAL::get_initialized_face_index_map(tm)) {
+    reserve_on_huge_pages(descriptors, num_vertices(tm));
     descriptors.resize(num_vertices(tm));
     for (auto v : vertices(tm)) descriptors[get(vertex_index, v)] = v;
     arrays = make_mesh_arrays(tm, vpm, vertex_index);
     // The arrays start every face at its smallest vertex; a Surface_point's
-    // coordinates follow the user's halfedge, so its corners are kept.
+    // coordinates follow the user's halfedge, so where it starts is kept.
+    reserve_on_huge_pages(face_of_index, num_faces(tm));
     face_of_index.resize(num_faces(tm), -1);
-    face_corners.resize(num_faces(tm));
+    reserve_on_huge_pages(face_rotation, num_faces(tm));
+    face_rotation.resize(num_faces(tm));
     int f_position = 0;
     for (auto f : faces(tm)) {
-      const auto h = halfedge(f, tm);
       const std::size_t fi = static_cast<std::size_t>(get(face_index, f));
+      const int first = static_cast<int>(get(vertex_index, source(halfedge(f, tm), tm)));
+      const std::array<int, 3>& corners = arrays.face[static_cast<std::size_t>(f_position)];
       face_of_index[fi] = f_position++;
-      face_corners[fi] = {{static_cast<std::size_t>(get(vertex_index, source(h, tm))),
-                           static_cast<std::size_t>(get(vertex_index, target(h, tm))),
-                           static_cast<std::size_t>(get(vertex_index, target(next(h, tm), tm)))}};
+      face_rotation[fi] = static_cast<std::uint8_t>(
+          std::find(corners.begin(), corners.end(), first) - corners.begin());
     }
   }
 
@@ -63,10 +69,12 @@ struct Indexed_mesh {
   Vertex_index_map vertex_index;
   Face_index_map face_index;
   std::vector<vertex_descriptor> descriptors;
-  /// By face index: the position of the face in `arrays.face`, and its
-  /// corners (user's vertex indices) in the order of `Surface_point`.
+  /// By face index: the position of the face in `arrays.face`, and where
+  /// its first corner in the order of `Surface_point` (the source of
+  /// `halfedge(f)`) is among its corners listed from the smallest user's
+  /// index on (see `Point_source.h`).
   std::vector<int> face_of_index;
-  std::vector<std::array<std::size_t, 3>> face_corners;
+  std::vector<std::uint8_t> face_rotation;
   Mesh_arrays arrays;
 };
 

@@ -4,6 +4,7 @@
 #define EXPMAP_INTERNAL_MESH_ARRAYS_H
 
 #include <expmap/Errors.h>
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Vector3.h>
 #include <expmap/internal/operators/Intrinsic_triangulation.h>
 #include <expmap/internal/operators/Triangulation_adjacency.h>
@@ -85,16 +86,20 @@ struct Mesh_arrays {
 template <class Fill>
 void build_compressed_rows(std::size_t rows, const std::vector<int>& counts, Fill fill,
                            std::vector<int>& start, std::vector<int>& entries) {
+  reserve_on_huge_pages(start, rows + 1);
   start.assign(rows + 1, 0);
   for (std::size_t r = 0; r < rows; ++r) start[r + 1] = start[r] + counts[r];
+  reserve_on_huge_pages(entries, static_cast<std::size_t>(start[rows]));
   entries.assign(static_cast<std::size_t>(start[rows]), 0);
-  std::vector<int> cursor(start.begin(), start.end() - 1);
+  std::vector<int> cursor;
+  reserve_on_huge_pages(cursor, rows);
+  cursor.assign(start.begin(), start.end() - 1);
   fill([&](int row, int value) { entries[cursor[row]++] = value; });
 }
 
 inline void compute_adjacency(Mesh_arrays& m) {
   const std::size_t n = m.point.size();
-  std::vector<int> counts(n, 0);
+  std::vector<int> counts = filled_on_huge_pages(n, 0);
   for (const auto& f : m.face)
     for (int v : f) ++counts[v];
   build_compressed_rows(
@@ -105,53 +110,80 @@ inline void compute_adjacency(Mesh_arrays& m) {
       },
       m.vertex_face_start, m.vertex_face);
 
-  std::vector<int> owned(n, 0);
-  for (const auto& f : m.face) ++owned[*std::min_element(f.begin(), f.end())];
+  // `counts` now counts the faces each vertex owns, then is their cursor.
+  std::fill(counts.begin(), counts.end(), 0);
+  for (const auto& f : m.face) ++counts[*std::min_element(f.begin(), f.end())];
+  reserve_on_huge_pages(m.owned_face_start, n + 1);
   m.owned_face_start.assign(n + 1, 0);
-  for (std::size_t v = 0; v < n; ++v) m.owned_face_start[v + 1] = m.owned_face_start[v] + owned[v];
+  for (std::size_t v = 0; v < n; ++v) m.owned_face_start[v + 1] = m.owned_face_start[v] + counts[v];
+  std::copy(m.owned_face_start.begin(), m.owned_face_start.end() - 1, counts.begin());
+  reserve_on_huge_pages(m.owned_face, m.face.size());
   m.owned_face.resize(m.face.size());
-  std::vector<int> cursor(m.owned_face_start.begin(), m.owned_face_start.end() - 1);
   for (auto f : m.face) {
     std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    m.owned_face[cursor[f[0]]++] = f;
+    m.owned_face[counts[f[0]]++] = f;
   }
 
-  // Neighbours: the other two corners of every incident face, deduplicated.
-  Vertex_adjacency adjacency = vertex_adjacency(n, m.face);
-  m.neighbor_start = std::move(adjacency.start);
-  m.neighbor = std::move(adjacency.neighbor);
-  for (std::size_t v = 0; v < n; ++v)
-    m.max_degree = std::max(m.max_degree, m.neighbor_start[v + 1] - m.neighbor_start[v]);
-
+  // Neighbours: the other two corners of every incident face, sorted and
+  // deduplicated, each with its distance. Gathered vertex by vertex, so the
+  // rows are written in order; at most two per incident face.
+  reserve_on_huge_pages(m.neighbor_start, n + 1);
+  m.neighbor_start.assign(n + 1, 0);
+  reserve_on_huge_pages(m.neighbor, 2 * m.vertex_face.size());
+  reserve_on_huge_pages(m.neighbor_distance, 2 * m.vertex_face.size());
+  std::vector<int> ring;
   double total = 0;
   std::size_t edges = 0;
-  m.neighbor_distance.resize(m.neighbor.size());
-  for (std::size_t v = 0; v < n; ++v)
-    for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
-      m.neighbor_distance[p] = norm(m.point[m.neighbor[p]] - m.point[v]);
-      if (m.neighbor[p] > static_cast<int>(v)) {
-        total += m.neighbor_distance[p];
+  for (std::size_t v = 0; v < n; ++v) {
+    ring.clear();
+    for (int q = m.vertex_face_start[v]; q < m.vertex_face_start[v + 1]; ++q) {
+      const std::array<int, 3>& f = m.face[m.vertex_face[q]];
+      const int k = f[0] == static_cast<int>(v) ? 0 : f[1] == static_cast<int>(v) ? 1 : 2;
+      ring.push_back(f[(k + 1) % 3]);
+      ring.push_back(f[(k + 2) % 3]);
+    }
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    for (int u : ring) {
+      m.neighbor.push_back(u);
+      m.neighbor_distance.push_back(norm(m.point[u] - m.point[v]));
+      if (u > static_cast<int>(v)) {
+        total += m.neighbor_distance.back();
         ++edges;
       }
     }
+    m.neighbor_start[v + 1] = static_cast<int>(m.neighbor.size());
+    m.max_degree = std::max(m.max_degree, static_cast<int>(ring.size()));
+  }
   m.mean_edge_length = edges > 0 ? total / static_cast<double>(edges) : 0.0;
 
-  // Components by breadth-first search over the neighbour lists.
-  m.component.assign(n, -1);
+  // Components by union-find over the faces' edges (`counts` holds the
+  // links): one pass in face order, where a breadth-first search would
+  // jump across the whole mesh. Numbered by their smallest vertex, as a
+  // search from each unvisited vertex in turn would number them.
+  std::vector<int>& link = counts;
+  for (std::size_t v = 0; v < n; ++v) link[v] = static_cast<int>(v);
+  auto root = [&](int v) {
+    while (link[v] != v) v = link[v] = link[link[v]];
+    return v;
+  };
+  for (const auto& f : m.face)
+    for (int k = 1; k < 3; ++k) {
+      const int a = root(f[0]), b = root(f[k]);
+      if (a != b) link[std::max(a, b)] = std::min(a, b);
+    }
+  reserve_on_huge_pages(m.component, n);
+  m.component.resize(n);
   m.component_size.clear();
-  std::vector<int> queue;
-  for (std::size_t seed = 0; seed < n; ++seed) {
-    if (m.component[seed] != -1) continue;
-    const int id = static_cast<int>(m.component_size.size());
-    queue.assign(1, static_cast<int>(seed));
-    m.component[seed] = id;
-    for (std::size_t head = 0; head < queue.size(); ++head)
-      for (int p = m.neighbor_start[queue[head]]; p < m.neighbor_start[queue[head] + 1]; ++p)
-        if (m.component[m.neighbor[p]] == -1) {
-          m.component[m.neighbor[p]] = id;
-          queue.push_back(m.neighbor[p]);
-        }
-    m.component_size.push_back(static_cast<int>(queue.size()));
+  for (std::size_t v = 0; v < n; ++v) {
+    const int r = root(static_cast<int>(v));
+    if (r == static_cast<int>(v)) {
+      m.component[v] = static_cast<int>(m.component_size.size());
+      m.component_size.push_back(0);
+    } else {
+      m.component[v] = m.component[r];
+    }
+    ++m.component_size[m.component[v]];
   }
 }
 
@@ -161,6 +193,9 @@ inline void compute_adjacency(Mesh_arrays& m) {
 inline Mesh_arrays renumbered_mesh_arrays(const Mesh_arrays& m, const std::vector<int>& order) {
   const std::size_t n = m.number_of_vertices();
   Mesh_arrays r;
+  reserve_on_huge_pages(r.original_index, n);
+  reserve_on_huge_pages(r.index_of_original, n);
+  reserve_on_huge_pages(r.point, n);
   r.original_index.resize(n);
   r.index_of_original.resize(n);
   r.point.resize(n);
@@ -170,9 +205,9 @@ inline Mesh_arrays renumbered_mesh_arrays(const Mesh_arrays& m, const std::vecto
     r.index_of_original[r.original_index[i]] = static_cast<int>(i);
     r.point[i] = m.point[old];
   }
-  std::vector<int> new_of_old(n);
+  std::vector<int> new_of_old = filled_on_huge_pages(n, 0);
   for (std::size_t i = 0; i < n; ++i) new_of_old[order[i]] = static_cast<int>(i);
-  r.face.reserve(m.face.size());
+  reserve_on_huge_pages(r.face, m.face.size());
   for (auto corners : m.face) {
     for (int& v : corners) v = new_of_old[v];
     std::rotate(corners.begin(), std::min_element(corners.begin(), corners.end()), corners.end());
@@ -217,7 +252,9 @@ Mesh_arrays make_mesh_arrays(const TriangleMesh& tm, VertexPointMap vpm, VertexI
   const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
   if (n == 0 || faces(tm).first == faces(tm).second)
     throw Invalid_input("the mesh is empty (it has no vertex or no face)");
+  reserve_on_huge_pages(m.point, n);
   m.point.resize(n);
+  reserve_on_huge_pages(m.face, static_cast<std::size_t>(num_faces(tm)));
   for (auto v : vertices(tm)) {
     const auto& p = get(vpm, v);
     const std::size_t i = static_cast<std::size_t>(get(vim, v));

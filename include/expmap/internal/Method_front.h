@@ -130,7 +130,7 @@ class Method_front {
   Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;
 
   internal::Point_source point_source(const Surface_point<face_descriptor>& p) const {
-    return resolve_point_source(m_indexed.arrays, m_indexed.face_of_index, m_indexed.face_corners,
+    return resolve_point_source(m_indexed.arrays, m_indexed.face_of_index, m_indexed.face_rotation,
                                 static_cast<std::size_t>(get(m_indexed.face_index, p.face)),
                                 p.barycentric);
   }

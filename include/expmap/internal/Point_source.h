@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,11 +38,13 @@ struct Point_source {
 };
 
 /// Checks and normalizes the coordinates `w` of a point of the face of
-/// index `user_face`, whose corners (user's indices, `Surface_point` order)
-/// are `user_corners`, and finds the face among the stored ones.
+/// index `user_face`, and finds the face among the stored ones. The
+/// coordinates follow the user's order of the corners (`Surface_point`'s),
+/// a rotation of the stored one: listed from its smallest user's index on,
+/// the user's first corner is the `face_rotation[user_face]`-th.
 /// \throws Invalid_input for a face out of range or bad coordinates.
 inline Point_source resolve_point_source(const Mesh_arrays& m, const std::vector<int>& face_of_index,
-                                         const std::vector<std::array<std::size_t, 3>>& user_corners,
+                                         const std::vector<std::uint8_t>& face_rotation,
                                          std::size_t user_face, const std::array<double, 3>& w) {
   if (user_face >= face_of_index.size() || face_of_index[user_face] < 0)
     throw Invalid_input("source face " + std::to_string(user_face) + " is out of range (the mesh has " +
@@ -61,11 +64,11 @@ inline Point_source resolve_point_source(const Mesh_arrays& m, const std::vector
   p.user_face = user_face;
   p.face = face_of_index[user_face];
   p.corner = m.face[p.face];
-  for (int k = 0; k < 3; ++k) {
-    const int v = m.from_original(user_corners[user_face][k]);
-    const int at = static_cast<int>(std::find(p.corner.begin(), p.corner.end(), v) - p.corner.begin());
-    p.weight[at] = std::max(0.0, w[k]) / sum;
-  }
+  int smallest = 0;
+  for (int k = 1; k < 3; ++k)
+    if (m.to_original(p.corner[k]) < m.to_original(p.corner[smallest])) smallest = k;
+  for (int k = 0; k < 3; ++k)
+    p.weight[(smallest + face_rotation[user_face] + k) % 3] = std::max(0.0, w[k]) / sum;
   p.position = Vector3{{0, 0, 0}};
   for (int k = 0; k < 3; ++k) {
     p.position += p.weight[k] * m.point[p.corner[k]];

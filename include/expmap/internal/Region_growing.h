@@ -3,6 +3,7 @@
 #ifndef EXPMAP_INTERNAL_REGION_GROWING_H
 #define EXPMAP_INTERNAL_REGION_GROWING_H
 
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Vector3.h>
 
@@ -20,6 +21,7 @@ namespace internal {
 class Vertex_marks {
  public:
   void resize(std::size_t n) {
+    reserve_on_huge_pages(m_entry, n);
     m_entry.assign(n, Entry{});
     m_current = 0;
   }

@@ -8,6 +8,7 @@
 // thread (see Workspace_pool).
 
 #include <expmap/Heat_options.h>
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Local_map_assembly.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Region_growing.h>
@@ -66,8 +67,9 @@ inline int star_solve_width(Angle_estimator estimator, bool boundary) {
 struct Workspace {
   /// A workspace for the default estimator's star solves.
   Workspace(const Heat_factors& factors, std::size_t n)
-      : poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1),
-        tentative(n) {
+      : poisson_solve(factors.poisson.size(), factors.poisson.number_of_supernodes(), 1) {
+    reserve_on_huge_pages(tentative, n);
+    tentative.resize(n);
     fit_star_solves(factors, Heat_query_options().angle_estimator);
     in_region.resize(n);
     seen.resize(n);

@@ -12,6 +12,7 @@
 // mesh's up to the cut-off the localized solves make anyway.
 
 #include <expmap/Heat_options.h>
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Mesh_arrays.h>
 #include <expmap/internal/Point_source.h>
 #include <expmap/internal/Region_growing.h>
@@ -48,7 +49,9 @@ struct Ball {
 /// The reusable O(n) arrays of the Dijkstra searches that size and collect
 /// balls (only the visited part is touched per search).
 struct Ball_search {
-  explicit Ball_search(std::size_t n) : tentative(n) {
+  explicit Ball_search(std::size_t n) {
+    reserve_on_huge_pages(tentative, n);
+    tentative.resize(n);
     in_region.resize(n);
     seen.resize(n);
   }

@@ -3,6 +3,7 @@
 #ifndef EXPMAP_INTERNAL_OPERATORS_BOUNDARY_LOOPS_H
 #define EXPMAP_INTERNAL_OPERATORS_BOUNDARY_LOOPS_H
 
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/Mesh_arrays.h>
 
 #include <cstddef>
@@ -24,15 +25,21 @@ inline std::vector<char> vertices_on_long_boundary_loops(const Mesh_arrays& m,
     const int faces = m.vertex_face_start[v + 1] - m.vertex_face_start[v];
     return faces > 0 && m.neighbor_start[v + 1] - m.neighbor_start[v] > faces;
   };
-  std::vector<int> parent(n);
+  std::vector<char> on_long_loop;
+  int first = 0;
+  while (first < static_cast<int>(n) && !may_be_on_boundary(first)) ++first;
+  if (first == static_cast<int>(n)) return on_long_loop;
+  std::vector<int> parent;
+  reserve_on_huge_pages(parent, n);
+  parent.resize(n);
   std::iota(parent.begin(), parent.end(), 0);
   auto root = [&](int v) {
     while (parent[v] != v) v = parent[v] = parent[parent[v]];
     return v;
   };
-  std::vector<double> perimeter(n, 0.0);
+  std::vector<double> perimeter = filled_on_huge_pages(n, 0.0);
   bool any = false;
-  for (int v = 0; v < static_cast<int>(n); ++v) {
+  for (int v = first; v < static_cast<int>(n); ++v) {
     if (!may_be_on_boundary(v)) continue;
     for (int p = m.neighbor_start[v]; p < m.neighbor_start[v + 1]; ++p) {
       const int u = m.neighbor[p];
@@ -52,7 +59,6 @@ inline std::vector<char> vertices_on_long_boundary_loops(const Mesh_arrays& m,
       perimeter[b] += m.neighbor_distance[p];
     }
   }
-  std::vector<char> on_long_loop;
   if (!any) return on_long_loop;
   on_long_loop.assign(n, 0);
   bool long_loop = false;

@@ -3,6 +3,7 @@
 #ifndef EXPMAP_INTERNAL_OPERATORS_TRIANGULATION_ADJACENCY_H
 #define EXPMAP_INTERNAL_OPERATORS_TRIANGULATION_ADJACENCY_H
 
+#include <expmap/internal/Huge_pages.h>
 #include <expmap/internal/operators/Intrinsic_triangulation.h>
 
 #include <algorithm>
@@ -25,25 +26,39 @@ struct Vertex_adjacency {
 /// The neighbours of `n` vertices in the triangles `faces`.
 inline Vertex_adjacency vertex_adjacency(std::size_t n,
                                          const std::vector<std::array<int, 3>>& faces) {
-  std::vector<int> count(n + 1, 0);
+  Vertex_adjacency a;
+  reserve_on_huge_pages(a.start, n + 1);
+  a.start.assign(n + 1, 0);
+  std::vector<int>& count = a.start;
   for (const auto& f : faces)
     for (int v : f) count[static_cast<std::size_t>(v) + 1] += 2;
   for (std::size_t v = 0; v < n; ++v) count[v + 1] += count[v];
-  std::vector<int> all(static_cast<std::size_t>(count[n]));
-  std::vector<int> fill(count.begin(), count.end() - 1);
+  // Every face's other two corners under each corner, then each vertex's
+  // list sorted, deduplicated and moved down in place: the rows are built
+  // in the memory they end in.
+  std::vector<int>& all = a.neighbor;
+  reserve_on_huge_pages(all, static_cast<std::size_t>(count[n]));
+  all.resize(static_cast<std::size_t>(count[n]));
+  std::vector<int> fill;
+  reserve_on_huge_pages(fill, n);
+  fill.assign(count.begin(), count.end() - 1);
   for (const auto& f : faces)
     for (int k = 0; k < 3; ++k) {
       all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 1) % 3];
       all[static_cast<std::size_t>(fill[f[k]]++)] = f[(k + 2) % 3];
     }
-  Vertex_adjacency a;
-  a.start.assign(n + 1, 0);
+  int kept = 0;
   for (std::size_t v = 0; v < n; ++v) {
     auto first = all.begin() + count[v], last = all.begin() + count[v + 1];
     std::sort(first, last);
-    a.neighbor.insert(a.neighbor.end(), first, std::unique(first, last));
-    a.start[v + 1] = static_cast<int>(a.neighbor.size());
+    last = std::unique(first, last);
+    const auto to = all.begin() + kept;
+    count[v] = kept;
+    kept += static_cast<int>(last - first);
+    if (to != first) std::copy(first, last, to);  // to < first: moving down is safe
   }
+  count[n] = kept;
+  all.resize(static_cast<std::size_t>(kept));
   return a;
 }
 

@@ -8,19 +8,12 @@
 /// An allocator that asks the operating system to back large arrays with
 /// huge pages (Linux transparent huge pages, where enabled).
 
+#include <expmap/internal/Huge_pages.h>
+
 #include <cstddef>
 #include <cstdlib>
 #include <memory>
 #include <new>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-#define EXPMAP_HUGE_PAGE_ADVICE 1
-#else
-#define EXPMAP_HUGE_PAGE_ADVICE 0
-#endif
 
 namespace expmap {
 namespace internal {
@@ -40,8 +33,7 @@ template <class T>
 class Huge_page_allocator {
  public:
   using value_type = T;
-  /// Size of a huge page on x86-64 and AArch64 Linux (with 4 KiB base pages).
-  static constexpr std::size_t huge_page = std::size_t{2} << 20;
+  static constexpr std::size_t huge_page = huge_page_bytes;
   /// Allocations from this size on are aligned and advised. Rounding up to
   /// whole huge pages wastes less than one per array, and only a few large
   /// arrays per mesh (the factors, one solve block per thread) use this
@@ -60,7 +52,7 @@ class Huge_page_allocator {
       const std::size_t rounded = (n * sizeof(T) + huge_page - 1) / huge_page * huge_page;
       void* p = std::aligned_alloc(huge_page, rounded);
       if (!p) throw std::bad_alloc();
-      madvise(p, rounded, MADV_HUGEPAGE);  // advice only: failure leaves ordinary pages
+      advise_huge_pages(p, rounded);
       return static_cast<T*>(p);
     }
 #endif
