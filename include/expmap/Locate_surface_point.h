@@ -53,7 +53,8 @@ class Surface_point_locator {
   /// side, a point may be and still be located.
   static constexpr double max_relative_distance = 1e8;
 
-  /// Builds the tree of the faces of `tm`.
+  /// Builds the tree of the faces of `tm` and its search tree for nearest
+  /// points.
   /// \throws Invalid_input if `tm` has no face or a vertex with a
   ///         coordinate that is not finite.
   explicit Surface_point_locator(const TriangleMesh& tm) : m_tm(tm) {
@@ -71,6 +72,11 @@ class Surface_point_locator {
       m_size = std::max(m_size, m_high[k] - m_low[k]);
     }
     CGAL::Polygon_mesh_processing::build_AABB_tree(tm, m_tree);
+    // CGAL builds the hierarchy and its search tree on the first query
+    // otherwise: seconds on millions of faces, which belong here, not to
+    // whichever query comes first.
+    m_tree.build();
+    m_tree.accelerate_distance_queries();
   }
 
   /// The point of the surface nearest to `xyz` (any nearest one where
