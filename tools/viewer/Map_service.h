@@ -114,7 +114,7 @@ class Map_service {
     check_size(*info, request, patch, r);
     const auto located = std::chrono::steady_clock::now();
 
-    const Method_cache::Lease lease = m_cache.acquire(*info, r.time_factor);
+    const Method_cache::Lease lease = m_cache.acquire(*info, r.time_factor, patch);
     const auto leased = std::chrono::steady_clock::now();
     if (info->max_region_faces) check_region(*info, lease.method(), request, patch, r);
     r.map = lease.method().compute(r.source, patch);

@@ -61,9 +61,14 @@ struct Cache_limits {
   /// recently used idle one makes room for a new one.
   unsigned variants_kept = 3;
   /// Fewer are kept where their `held_bytes()` and a new one's (as large as
-  /// the largest kept) would exceed this: heat's factors grow with the mesh
-  /// (a heat method holds 1.1 GB on 711k vertices, 4.4 GB on 2.85M, most of
-  /// it its factors), and on 2.85M vertices only one is kept.
+  /// the largest kept one once precomputed) would exceed this. Heat's
+  /// factors grow with the mesh: below `Heat_options::subdomain_min_vertices`
+  /// a heat method holds its whole mesh's factors from the start; above,
+  /// its subdomains' cache bound (1 GiB) until a patch
+  /// too large for them factors the whole mesh (1.1 GB more on 711k
+  /// vertices, 4.4 GB on 2.85M), which first drops every other idle variant
+  /// (until one such factorization was measured, then as many as its bytes
+  /// require).
   std::size_t variant_bytes_kept = std::size_t(3) << 30;
 };
 
@@ -96,6 +101,9 @@ class Method_cache {
     ~Lease() {
       if (!m_entry) return;
       std::lock_guard<std::mutex> lock(*m_mutex);
+      // A query may have factored the whole mesh where the estimate
+      // (`may_factor_whole_mesh()`) did not expect it.
+      m_entry->held_bytes = m_entry->method->held_bytes();
       --m_entry->queries_running;
       m_entry->turn.notify_all();
     }
@@ -111,16 +119,20 @@ class Method_cache {
 
   const Cache_limits& limits() const { return m_limits; }
 
-  /// The method `info` (with heat's `time_factor`), leased for one query.
-  /// The first call for it precomputes it on the calling thread. When
-  /// `queries_per_method` queries run on it, the call waits for one of them
-  /// behind the calls that came before it.
+  /// The method `info` (with heat's `time_factor`), leased for one query
+  /// with `patch`. The first call for it precomputes it on the calling
+  /// thread; so does the first call whose patch may need the whole mesh's
+  /// factors of a method that has only built subdomains (heat on a large
+  /// mesh), for that second step. When `queries_per_method` queries run on
+  /// it, the call waits for one of them behind the calls that came before
+  /// it.
   /// \throws Busy while another call precomputes it, when
   ///         `waiting_per_method` calls wait already, or after waiting
   ///         `max_wait_seconds`.
   /// \throws Precomputation_failed if its precomputation failed (then and
-  ///         on every later call: it is not tried again).
-  Lease acquire(const Method_info& info, double time_factor) {
+  ///         on every later call: it is not tried again), or if factoring
+  ///         its whole mesh failed (for this call: a later one tries again).
+  Lease acquire(const Method_info& info, double time_factor, const expmap::Patch& patch) {
     if (!info.takes_time_factor) time_factor = 0;
     std::shared_ptr<Entry> entry;
     {
@@ -131,20 +143,32 @@ class Method_cache {
         if (entry->state == Precomputation_status::State::failed)
           throw Precomputation_failed(entry->error, entry->invalid_input);
         if (entry->state == Precomputation_status::State::running) throw precomputing(*entry);
-        wait_for_turn(*entry, lock);
-        ++entry->queries_running;
-        return Lease(entry, m_mutex);
+        if (!entry->method->may_factor_whole_mesh(patch)) {
+          wait_for_turn(*entry, lock);
+          ++entry->queries_running;
+          return Lease(entry, m_mutex);
+        }
+        // Until one such factorization was measured, it may take the
+        // whole budget.
+        make_room(info.name, m_whole_mesh_bytes ? m_whole_mesh_bytes : m_limits.variant_bytes_kept,
+                  entry.get());
+        entry->state = Precomputation_status::State::running;
+        entry->started = std::chrono::steady_clock::now();
+        entry->step.clear();
+        entry->fraction = 0;
+      } else {
+        make_room(info.name, largest_precomputed(info.name));
+        entry = std::make_shared<Entry>();
+        entry->method_name = info.name;
+        entry->time_factor = time_factor;
+        entry->started = std::chrono::steady_clock::now();
+        entry->last_use = ++m_clock;
+        m_entries.push_back(entry);
       }
-      make_room(info.name);
-      entry = std::make_shared<Entry>();
-      entry->method_name = info.name;
-      entry->time_factor = time_factor;
-      entry->started = std::chrono::steady_clock::now();
-      entry->last_use = ++m_clock;
-      m_entries.push_back(entry);
     }
     // The precomputation runs outside the lock: status() and other methods'
     // queries go on meanwhile; its progress is kept for status().
+    const bool whole_mesh = entry->method != nullptr;
     std::unique_ptr<Viewer_method> method;
     std::string error;
     bool invalid_input = false;
@@ -155,22 +179,40 @@ class Method_cache {
       progressing->fraction = fraction;
     };
     try {
-      method = info.make(m_mesh, time_factor, progress);
+      if (whole_mesh)
+        entry->method->factor_whole_mesh(progress);
+      else
+        method = info.make(m_mesh, time_factor, progress);
     } catch (const expmap::Invalid_input& e) {
       error = e.what();
       invalid_input = true;
     } catch (const std::exception& e) {
       error = expmap::internal::user_message(e);
     }
-    std::lock_guard<std::mutex> lock(m_mutex);
+    std::unique_lock<std::mutex> lock(m_mutex);
     entry->seconds = seconds_since(entry->started);
+    if (whole_mesh) {
+      entry->state = Precomputation_status::State::ready;
+      entry->held_bytes = entry->method->held_bytes();
+      if (!error.empty())
+        throw Precomputation_failed("factoring the whole mesh for " + describe(*entry) +
+                                        " failed: " + error,
+                                    invalid_input);
+      m_whole_mesh_bytes = std::max(m_whole_mesh_bytes, entry->held_bytes);
+      std::printf("expmap: factored the whole mesh for %s in %s\n", describe(*entry).c_str(),
+                  seconds_text(entry->seconds).c_str());
+      std::fflush(stdout);
+      wait_for_turn(*entry, lock);
+      ++entry->queries_running;
+      return Lease(entry, m_mutex);
+    }
     if (!method) {
       entry->state = Precomputation_status::State::failed;
       entry->error = "precomputing " + describe(*entry) + " failed: " + error;
       entry->invalid_input = invalid_input;
       throw Precomputation_failed(entry->error, invalid_input);
     }
-    entry->held_bytes = method->held_bytes();
+    entry->held_bytes = entry->precomputed_bytes = method->held_bytes();
     entry->method = std::move(method);
     entry->state = Precomputation_status::State::ready;
     ++entry->queries_running;
@@ -212,6 +254,7 @@ class Method_cache {
     double fraction = 0;
     std::unique_ptr<const Viewer_method> method;
     std::size_t held_bytes = 0;
+    std::size_t precomputed_bytes = 0;  // held_bytes once precomputed, before any whole mesh
     std::string error;
     bool invalid_input = false;
     unsigned queries_running = 0;
@@ -280,24 +323,36 @@ class Method_cache {
     return nullptr;
   }
 
-  // Before a new precomputation of `name`: drops the least recently used
-  // idle ready or failed variant while `variants_kept` are held, or while
-  // their bytes and a new one's would exceed `variant_bytes_kept`. Leases
+  // What a new variant of `name` is expected to hold: the most a kept one
+  // held once precomputed.
+  std::size_t largest_precomputed(const std::string& name) const {
+    std::size_t largest = 0;
+    for (const auto& e : m_entries)
+      if (e->method_name == name) largest = std::max(largest, e->precomputed_bytes);
+    return largest;
+  }
+
+  // Before a precomputation of `name` expected to hold `expected` bytes:
+  // drops the least recently used idle ready or failed variant while their
+  // bytes and `expected` would exceed `variant_bytes_kept`. For a new
+  // variant (`growing` null) also while `variants_kept` are held; a variant
+  // `growing` (factoring its whole mesh) counts as `expected` alone. Leases
   // keep their entry alive, so only idle ones go.
-  void make_room(const std::string& name) {
+  void make_room(const std::string& name, std::size_t expected, const Entry* growing = nullptr) {
     for (;;) {
-      std::size_t held = 0, bytes = 0, largest = 0;
+      std::size_t held = 0, bytes = 0;
       std::shared_ptr<Entry> oldest;
       for (const auto& e : m_entries) {
-        if (e->method_name != name) continue;
+        if (e->method_name != name || e.get() == growing) continue;
         ++held;
         bytes += e->held_bytes;
-        largest = std::max(largest, e->held_bytes);
         const bool idle = e->state != Precomputation_status::State::running &&
                           e->queries_running == 0 && e->queue.empty();
         if (idle && (!oldest || e->last_use < oldest->last_use)) oldest = e;
       }
-      if (held < m_limits.variants_kept && bytes + largest <= m_limits.variant_bytes_kept) return;
+      if ((growing || held < m_limits.variants_kept) &&
+          (held == 0 || bytes + expected <= m_limits.variant_bytes_kept))
+        return;
       if (!oldest)
         throw Busy("every kept " + name + " method is in use; retry when a query is done", 1);
       m_entries.erase(std::find(m_entries.begin(), m_entries.end(), oldest));
@@ -309,6 +364,7 @@ class Method_cache {
   mutable std::mutex m_mutex;
   std::vector<std::shared_ptr<Entry>> m_entries;
   unsigned long long m_clock = 0;
+  std::size_t m_whole_mesh_bytes = 0;  // the most a variant held once its whole mesh was factored
 };
 
 }  // namespace expmap_view

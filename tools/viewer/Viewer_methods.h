@@ -21,7 +21,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <cstddef>
-#include <limits>
 #include <memory>
 #include <type_traits>
 #include <string>
@@ -41,8 +40,15 @@ class Viewer_method {
   /// The map around `source` (its fold-free radius filled).
   virtual Map compute(const Point_on_surface& source, const expmap::Patch& patch) const = 0;
   /// The bytes of what it keeps that grow fastest with the mesh (heat's
-  /// factors), for deciding how many variants to keep; 0 for the others.
+  /// factors, and on subdomains their cache's bound), for deciding how many
+  /// variants to keep; 0 for the others.
   virtual std::size_t held_bytes() const { return 0; }
+  /// Whether a map with `patch` may first have to factor the whole mesh
+  /// (heat on subdomains: `Heat_exponential_map::may_factor_whole_mesh()`).
+  virtual bool may_factor_whole_mesh(const expmap::Patch&) const { return false; }
+  /// Factors the whole mesh now, reporting to `progress`, where
+  /// `may_factor_whole_mesh()` said a map might.
+  virtual void factor_whole_mesh(const expmap::Precomputation_callback&) const {}
   /// The exact method's `region_faces()` for this query, counted up to
   /// `at_most` + 1, what its memory grows with; 0 for the other methods.
   virtual std::size_t region_faces(const Point_on_surface&, const expmap::Patch&,
@@ -65,9 +71,20 @@ class Viewer_method_model final : public Viewer_method {
     return m_method.compute(source, patch, query);
   }
   std::size_t held_bytes() const override {
-    if constexpr (std::is_same_v<Method, expmap::Heat_exponential_map<Mesh>>)
-      return m_method.factor_bytes();
+    if constexpr (is_heat) {
+      // The subdomains' cache counts at its bound: it grows with queries.
+      const std::size_t subdomains =
+          m_method.uses_subdomains() ? m_method.options().subdomain_cache_bytes : 0;
+      return m_method.factor_bytes() - m_method.subdomain_bytes() + subdomains;
+    }
     return 0;
+  }
+  bool may_factor_whole_mesh(const expmap::Patch& patch) const override {
+    if constexpr (is_heat) return m_method.may_factor_whole_mesh(patch);
+    return false;
+  }
+  void factor_whole_mesh(const expmap::Precomputation_callback& progress) const override {
+    if constexpr (is_heat) m_method.factor_whole_mesh(progress);
   }
   std::size_t region_faces(const Point_on_surface& source, const expmap::Patch& patch,
                            std::size_t at_most) const override {
@@ -77,6 +94,7 @@ class Viewer_method_model final : public Viewer_method {
   }
 
  private:
+  static constexpr bool is_heat = std::is_same_v<Method, expmap::Heat_exponential_map<Mesh>>;
   Method m_method;
 };
 
@@ -127,10 +145,9 @@ inline std::unique_ptr<Viewer_method> make_heat(const Mesh& mesh, double time_fa
   expmap::Heat_options options;
   options.time_factor = time_factor;
   options.progress = progress;
-  // The whole mesh's factors, with their progress on the page, on any mesh:
-  // the memory budget (doc/viewer.md) counts a heat method's bytes once
-  // built, which a method on subdomains would exceed as its queries grow it.
-  options.subdomain_min_vertices = std::numeric_limits<std::size_t>::max();
+  // On large meshes queries run on subdomains; a patch too large for them
+  // factors the whole mesh first, as a precomputation of its own
+  // (`Method_cache::acquire()`).
   return std::make_unique<Viewer_method_model<expmap::Heat_exponential_map<Mesh>>>(mesh, options);
 }
 template <class Method>

@@ -26,6 +26,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -101,10 +102,12 @@ struct Body {
   std::string content, gzip, mime;
 };
 
-// `text` in gzip form, at zlib's default level.
+// `text` in gzip form, at zlib's fastest level: the mesh's JSON on 2.85M
+// vertices (303 MB) compresses to 124 MB in about 5 s; the default level
+// takes five times as long for a few percent fewer bytes.
 std::string gzip(const std::string& text) {
   z_stream z{};
-  if (deflateInit2(&z, Z_DEFAULT_COMPRESSION, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
+  if (deflateInit2(&z, Z_BEST_SPEED, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY) != Z_OK)
     throw std::runtime_error("zlib cannot start compressing");
   std::string out(deflateBound(&z, static_cast<uLong>(text.size())), '\0');
   z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data()));
@@ -294,9 +297,13 @@ int run_view_command(const std::vector<std::string>& args) {
   if (!CGAL::is_triangle_mesh(mesh) || mesh.number_of_faces() == 0)
     return fail("'" + a.mesh + "' has no triangle faces to show");
 
+  // The mesh's JSON is made while the point locator builds its trees: both
+  // only read the mesh, and each takes seconds on millions of faces.
+  std::future<Body> mesh_json_body =
+      std::async(std::launch::async, [&mesh] { return make_body(mesh_json(mesh), "application/json"); });
   const Cache_limits cache_limits;
   Map_service service(mesh, cache_limits, a.mesh);
-  const auto mesh_body = std::make_shared<const Body>(make_body(mesh_json(mesh), "application/json"));
+  const auto mesh_body = std::make_shared<const Body>(mesh_json_body.get());
 
   httplib::Server server;
   // A thread for each query that may run or wait on each method, and eight
