@@ -72,10 +72,12 @@ class Viewer_method_model final : public Viewer_method {
   }
   std::size_t held_bytes() const override {
     if constexpr (is_heat) {
-      // The subdomains' cache counts at its bound: it grows with queries.
-      const std::size_t subdomains =
-          m_method.uses_subdomains() ? m_method.options().subdomain_cache_bytes : 0;
-      return m_method.factor_bytes() - m_method.subdomain_bytes() + subdomains;
+      // The subdomains' cache counts at its bound: it grows with queries,
+      // which may also change it between the two reads below.
+      const std::size_t cached = m_method.subdomain_bytes();
+      const std::size_t all = m_method.factor_bytes();
+      const std::size_t bound = m_method.uses_subdomains() ? m_method.options().subdomain_cache_bytes : 0;
+      return (all > cached ? all - cached : 0) + bound;
     }
     return 0;
   }
