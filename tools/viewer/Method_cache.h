@@ -144,9 +144,7 @@ class Method_cache {
           throw Precomputation_failed(entry->error, entry->invalid_input);
         if (entry->state == Precomputation_status::State::running) throw precomputing(*entry);
         if (!entry->method->may_factor_whole_mesh(patch)) {
-          wait_for_turn(*entry, lock);
-          ++entry->queries_running;
-          return Lease(entry, m_mutex);
+          return lease_in_turn(entry, lock);
         }
         // Until one such factorization was measured, it may take the
         // whole budget.
@@ -202,9 +200,7 @@ class Method_cache {
       std::printf("expmap: factored the whole mesh for %s in %s\n", describe(*entry).c_str(),
                   seconds_text(entry->seconds).c_str());
       std::fflush(stdout);
-      wait_for_turn(*entry, lock);
-      ++entry->queries_running;
-      return Lease(entry, m_mutex);
+      return lease_in_turn(entry, lock);
     }
     if (!method) {
       entry->state = Precomputation_status::State::failed;
@@ -287,6 +283,13 @@ class Method_cache {
                      std::to_string(m_limits.queries_per_method) + " queries of " + describe(e) +
                      " to end; retry",
                  1);
+  }
+
+  // `e` leased for one query once its turn comes (`wait_for_turn`).
+  Lease lease_in_turn(const std::shared_ptr<Entry>& e, std::unique_lock<std::mutex>& lock) {
+    wait_for_turn(*e, lock);
+    ++e->queries_running;
+    return Lease(e, m_mutex);
   }
 
   // Busy for a request that finds `e` being precomputed: what it waits for,
