@@ -114,7 +114,8 @@ class Heat_exponential_map
       // for the first time costs page faults that belong to the
       // precomputation.
       internal::heat::report(m_options, Step::query_workspace);
-      m_whole->workspaces.acquire([this] { return make_workspace(m_whole->factors); });
+      m_whole->workspaces.acquire(
+          [this] { return make_workspace(m_whole->factors, m_indexed.arrays); });
     }
     internal::heat::report(m_options, Step::done);
     // The callback may refer to its caller's objects, which may not outlive
@@ -315,10 +316,6 @@ class Heat_exponential_map
                                                 m_indexed.descriptors, *ws, statistics);
     result.statistics = statistics;
     return result;
-  }
-  std::unique_ptr<internal::heat::Workspace> make_workspace(
-      const internal::heat::Heat_factors& factors) const {
-    return make_workspace(factors, m_indexed.arrays);
   }
   static std::unique_ptr<internal::heat::Workspace> make_workspace(
       const internal::heat::Heat_factors& factors, const internal::Mesh_arrays& mesh) {

@@ -238,7 +238,7 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
     make_identity_row(A, identity_rows);
     report(options, Precomputation_step::heat_factorization);
     f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
-    f.heat_is_m_matrix = subdomain ? is_m_matrix(A, subdomain->is_cut) : is_m_matrix(A);
+    f.heat_is_m_matrix = is_m_matrix(A, subdomain ? subdomain->is_cut : std::vector<char>{});
     if (f.heat_is_m_matrix) {
       const Eigen::VectorXd diagonal = A.diagonal();
       f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
