@@ -10,11 +10,13 @@
 
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <unordered_map>
 #include <vector>
 
@@ -152,6 +154,60 @@ BOOST_AUTO_TEST_CASE(a_map_does_not_depend_on_the_queries_before_it) {
     BOOST_TEST(a.indices == b.indices);
     BOOST_TEST(a.distance == b.distance);
     BOOST_TEST(a.angle == b.angle);
+  }
+}
+
+// A batch answers neighbouring sources one after another, and two threads
+// that need the same ball share one build: a batch of the sources of one
+// region, given in a shuffled order, on two threads, keeps the same balls
+// as answering them one by one in order, and gives the same maps; two
+// threads asking for the same balls at once keep one copy of each.
+BOOST_AUTO_TEST_CASE(a_batch_factors_each_ball_once) {
+  const Surface_mesh mesh = load_mesh<Surface_mesh>("armadillo.off");
+  const Heat whole(mesh);
+  std::vector<std::size_t> sources = whole.compute_by_index(100, expmap::Patch::vertex_count(400)).indices;
+  std::shuffle(sources.begin(), sources.end(), std::mt19937(48));
+  const expmap::Patch patch = expmap::Patch::vertex_count(120);
+
+  const Heat one_by_one(mesh, on_subdomains());
+  std::vector<std::size_t> in_order = sources;
+  std::sort(in_order.begin(), in_order.end());
+  for (std::size_t s : in_order) one_by_one.compute_by_index(s, patch);
+  const Heat batched(mesh, on_subdomains());
+  expmap::Batch_options two;
+  two.threads = 2;
+  const auto batch = batched.compute_many_by_index(sources, patch, two);
+  BOOST_TEST_MESSAGE("one by one: " << one_by_one.subdomain_bytes() << " bytes, batch: "
+                                    << batched.subdomain_bytes());
+  // Equal up to the Poisson factor's compression, which round-off can move
+  // by a few entries; one ball more would be several percent.
+  const double ratio = static_cast<double>(batched.subdomain_bytes()) /
+                       static_cast<double>(one_by_one.subdomain_bytes());
+  BOOST_TEST(std::abs(ratio - 1) <= 0.01);
+  BOOST_REQUIRE(batch.failures() == 0u);
+
+  // Two threads asking for the same balls at the same time.
+  const Heat shared(mesh, on_subdomains());
+  const std::vector<std::size_t> far_apart = {0, 5000, 10000, 15000, 20000, 25000};
+  const auto ask = [&] {
+    for (std::size_t s : far_apart) shared.compute_by_index(s, patch);
+  };
+  std::thread other(ask);
+  ask();
+  other.join();
+  const Heat alone(mesh, on_subdomains());
+  for (std::size_t s : far_apart) alone.compute_by_index(s, patch);
+  BOOST_TEST(std::abs(static_cast<double>(shared.subdomain_bytes()) /
+                          static_cast<double>(alone.subdomain_bytes()) -
+                      1) <= 0.01);
+
+  for (std::size_t i = 0; i < sources.size(); i += 37) {
+    const auto expected = one_by_one.compute_by_index(sources[i], patch);
+    BOOST_TEST(batch.maps[i].indices == expected.indices);
+    // Up to the round-off of factorizations run on other threads.
+    const Agreement same = agreement(expected, batch.maps[i]);
+    BOOST_TEST(same.mean_radial <= 1e-12);
+    BOOST_TEST(same.mean_angular <= 1e-12);
   }
 }
 

@@ -27,6 +27,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
+#include <future>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -74,20 +76,40 @@ class Subdomain_cache {
 
   /// The subdomain holding the ball of `scale` times the radius a patch of
   /// graph radius `patch_radius` around `s` needs; built if it is not
-  /// cached, null if it is too large for a subdomain.
+  /// cached, null if it is too large for a subdomain. Queries on other
+  /// threads that need the same ball meanwhile wait for this build.
   std::shared_ptr<const Subdomain> holding(const Mesh_arrays& whole, int s, double patch_radius,
                                            double scale) {
-    const double h = whole.mean_edge_length;
-    const int rung = rung_of(h, scale * needed_radius(h, patch_radius));
-    const double reach = h * std::exp2(rung / rungs_per_octave);
+    const int rung = rung_of(whole.mean_edge_length, patch_radius, scale);
+    const double reach = reach_of(whole.mean_edge_length, rung);
     auto search = m_searches.acquire([&] { return make_search(whole); });
     const int center = search->center_within(whole, s, center_reach * reach);
-    if (std::shared_ptr<const Subdomain> cached = find(center, rung)) return cached;
-    Ball ball = search->ball(whole, center, (1 + center_reach) * reach, most_ball_vertices(whole));
-    if (ball.vertex.empty()) return nullptr;
-    std::shared_ptr<const Subdomain> sub = make_subdomain<Solver>(
-        whole, std::move(ball), rung, m_long_boundary, m_options);
-    insert(sub);
+    std::promise<std::shared_ptr<const Subdomain>> promise;
+    std::shared_future<std::shared_ptr<const Subdomain>> other;
+    {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      for (Entry& e : m_cached)
+        if (e.subdomain->ball.center == center && e.subdomain->rung == rung) {
+          e.last_use = ++m_clock;
+          return e.subdomain;
+        }
+      for (const Build& b : m_building)
+        if (b.center == center && b.rung == rung) other = b.result;
+      if (!other.valid()) m_building.push_back({center, rung, promise.get_future().share()});
+    }
+    if (other.valid()) return other.get();  // rethrows the builder's exception
+    std::shared_ptr<const Subdomain> sub;
+    try {
+      Ball ball = search->ball(whole, center, (1 + center_reach) * reach, most_ball_vertices(whole));
+      if (!ball.vertex.empty())
+        sub = make_subdomain<Solver>(whole, std::move(ball), rung, m_long_boundary, m_options);
+    } catch (...) {
+      finish_build(center, rung, nullptr);
+      promise.set_exception(std::current_exception());
+      throw;
+    }
+    finish_build(center, rung, sub);
+    promise.set_value(sub);
     return sub;
   }
 
@@ -108,9 +130,8 @@ class Subdomain_cache {
                            std::size_t target) const {
     if (patch.kind() == Patch::Kind::vertex_set) return true;
     const double h = whole.mean_edge_length;
-    const double ball = (1 + center_reach) * h *
-                        std::exp2(rung_of(h, needed_radius(h, patch_radius(patch, target))) /
-                                  rungs_per_octave);
+    const double ball =
+        (1 + center_reach) * reach_of(h, rung_of(h, patch_radius(patch, target)));
     return M_PI * ball * ball / m_area_per_vertex >
            static_cast<double>(most_ball_vertices(whole));
   }
@@ -126,35 +147,36 @@ class Subdomain_cache {
     std::shared_ptr<const Subdomain> subdomain;
     std::uint64_t last_use;
   };
+  // A ball being built, which other queries for it wait for.
+  struct Build {
+    int center, rung;
+    std::shared_future<std::shared_ptr<const Subdomain>> result;
+  };
 
-  // The radius of the ball a patch of radius `patch_radius` needs, and the
-  // rung of the ladder it rounds up to.
-  double needed_radius(double h, double patch_radius) const {
-    return std::max(subdomain_patch_radii * patch_radius,
-                    patch_radius + subdomain_heat_margin * h * std::sqrt(m_options.time_factor));
+  // The rung of the ladder that `scale` times the radius of the ball a
+  // patch of radius `patch_radius` needs rounds up to, and a rung's reach.
+  int rung_of(double h, double patch_radius, double scale = 1) const {
+    const double needed =
+        scale * std::max(subdomain_patch_radii * patch_radius,
+                         patch_radius + subdomain_heat_margin * h * std::sqrt(m_options.time_factor));
+    return static_cast<int>(std::ceil(rungs_per_octave * std::log2(std::max(needed / h, 1.0))));
   }
-  static int rung_of(double h, double radius) {
-    return static_cast<int>(std::ceil(rungs_per_octave * std::log2(std::max(radius / h, 1.0))));
-  }
+  static double reach_of(double h, int rung) { return h * std::exp2(rung / rungs_per_octave); }
   static std::size_t most_ball_vertices(const Mesh_arrays& whole) {
     return std::min(max_ball_vertices, whole.number_of_vertices() / 4);
   }
   static std::unique_ptr<Ball_search> make_search(const Mesh_arrays& whole) {
     return std::make_unique<Ball_search>(whole.number_of_vertices());
   }
-  std::shared_ptr<const Subdomain> find(int center, int rung) {
+  // Keeps `sub` (unless null) in place of its build, dropping the least
+  // recently used others beyond the bound (queries still running on them
+  // keep them alive until they finish).
+  void finish_build(int center, int rung, const std::shared_ptr<const Subdomain>& sub) {
     std::lock_guard<std::mutex> lock(m_mutex);
-    for (Entry& e : m_cached)
-      if (e.subdomain->ball.center == center && e.subdomain->rung == rung) {
-        e.last_use = ++m_clock;
-        return e.subdomain;
-      }
-    return nullptr;
-  }
-  // Keeps `sub`, dropping the least recently used others beyond the bound
-  // (queries still running on them keep them alive until they finish).
-  void insert(const std::shared_ptr<const Subdomain>& sub) {
-    std::lock_guard<std::mutex> lock(m_mutex);
+    m_building.erase(std::find_if(m_building.begin(), m_building.end(), [&](const Build& b) {
+      return b.center == center && b.rung == rung;
+    }));
+    if (!sub) return;
     m_cached.push_back({sub, ++m_clock});
     m_bytes += sub->bytes;
     while (m_bytes > m_options.subdomain_cache_bytes && m_cached.size() > 1) {
@@ -172,6 +194,7 @@ class Subdomain_cache {
   Workspace_pool<Ball_search> m_searches;
   mutable std::mutex m_mutex;
   std::vector<Entry> m_cached;
+  std::vector<Build> m_building;
   std::uint64_t m_clock = 0;
   std::size_t m_bytes = 0;
 };
