@@ -76,17 +76,26 @@ inline std::string batch_error_message(std::size_t source, const std::string& wh
 /// and collects the maps in source order. An exception from a query becomes
 /// that source's error; one from `batch.progress` stops the batch and is
 /// rethrown. `noun` names a source in the errors.
+///
+/// Queries run in the order `order` gives (a permutation of the positions
+/// in `sources`; empty: as given), each thread on runs of it
+/// (`parallel_loop`). Given along a curve through the sources (as
+/// `hilbert_order`), neighbouring sources run one after another on one
+/// thread: a heat method on subdomains then factors each ball once for all
+/// the sources it serves (internal/heat/Subdomain_cache.h).
 template <class VertexDescriptor, class Query>
 Batch_result<VertexDescriptor> run_batch(const std::vector<std::size_t>& sources,
                                          const Batch_options& batch, Query query,
-                                         const char* noun = "source vertex") {
+                                         const char* noun = "source vertex",
+                                         const std::vector<std::size_t>& order = {}) {
   Batch_result<VertexDescriptor> result;
   result.maps.resize(sources.size());
   result.errors.resize(sources.size());
   std::mutex progress_mutex;
   std::size_t done = 0;
   parallel_loop(sources.size(), batch_thread_count(batch.threads, sources.size()),
-                [&](std::size_t i) {
+                [&](std::size_t k) {
+                  const std::size_t i = order.empty() ? k : order[k];
                   try {
                     result.maps[i] = query(sources[i]);
                   } catch (const std::exception& e) {
@@ -97,7 +106,8 @@ Batch_result<VertexDescriptor> run_batch(const std::vector<std::size_t>& sources
                   std::lock_guard<std::mutex> lock(progress_mutex);
                   ++done;
                   if (batch.progress) batch.progress(done, sources.size());
-                });
+                },
+                /*runs=*/!order.empty());
   return result;
 }
 

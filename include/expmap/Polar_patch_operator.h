@@ -13,6 +13,7 @@
 #include <expmap/Errors.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
+#include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Parallel_loop.h>
 #include <expmap/internal/Uv_triangle_locator.h>
 
@@ -112,6 +113,23 @@ double mean_edge_length(const TriangleMesh& tm) {
     ++count;
   }
   return count > 0 ? total / double(count) : 0;
+}
+
+/// The order in which `polar_patch_operator` maps `sources`: along a
+/// Hilbert curve through their points (see `run_batch`).
+template <class TriangleMesh, class VertexIndexMap>
+std::vector<std::size_t> source_order(const TriangleMesh& tm, VertexIndexMap vertex_index,
+                                      const std::vector<std::size_t>& sources) {
+  const auto point = get(CGAL::vertex_point, tm);
+  std::vector<Vector3> where(static_cast<std::size_t>(num_vertices(tm)));
+  for (auto v : vertices(tm)) {
+    const auto p = get(point, v);
+    where[static_cast<std::size_t>(get(vertex_index, v))] = {{p.x(), p.y(), p.z()}};
+  }
+  std::vector<Vector3> points;
+  points.reserve(sources.size());
+  for (std::size_t s : sources) points.push_back(where[s]);
+  return hilbert_order(points);
 }
 
 /// One source's grid points that its map holds: for each, its ray-major
@@ -259,9 +277,11 @@ Polar_patch_operator polar_patch_operator(
   std::vector<std::string> errors(sources.size());
   std::mutex progress_mutex;
   std::size_t done = 0;
+  const std::vector<std::size_t> order = internal::source_order(tm, vertex_index, sources);
   internal::parallel_loop(
       sources.size(), internal::batch_thread_count(batch.threads, sources.size()),
-      [&](std::size_t s) {
+      [&](std::size_t k) {
+        const std::size_t s = order[k];
         try {
           typename Method::Query own = query;
           if (!references.empty()) own.reference_direction = references[s];
@@ -277,7 +297,8 @@ Polar_patch_operator polar_patch_operator(
         std::lock_guard<std::mutex> lock(progress_mutex);
         ++done;
         if (batch.progress) batch.progress(done, sources.size());
-      });
+      },
+      /*runs=*/true);
 
   Polar_patch_operator op;
   op.grid = grid;

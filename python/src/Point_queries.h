@@ -13,6 +13,7 @@
 #include "Map_arrays.h"
 
 #include <expmap/Batch.h>
+#include <expmap/internal/Locality_order.h>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -215,12 +216,16 @@ void add_point_queries(py::class_<Bound_method<Method>>& c) {
         {
           py::gil_scoped_release release;
           std::vector<Surface_point> sources;
+          std::vector<expmap::internal::Vector3> near;
           const double* x = points.data();
-          for (std::size_t i = 0; i < k; ++i)
-            sources.push_back(lookup.locate({{x[3 * i], x[3 * i + 1], x[3 * i + 2]}}));
+          for (std::size_t i = 0; i < k; ++i) {
+            near.push_back({{x[3 * i], x[3 * i + 1], x[3 * i + 2]}});
+            sources.push_back(lookup.locate(near.back()));
+          }
           batch = expmap::internal::run_batch<Mesh::Vertex_index>(
               positions, options,
-              [&](std::size_t i) { return compute_from_point(b, sources[i], patch, query); });
+              [&](std::size_t i) { return compute_from_point(b, sources[i], patch, query); },
+              "source point", expmap::internal::hilbert_order(near));
         }
         return Batch_arrays(positions, batch.maps, std::move(batch.errors), b.original);
       },

@@ -18,26 +18,33 @@
 namespace expmap {
 namespace internal {
 
-/// The vertices of `m` along a Hilbert curve through their positions:
-/// `order[i]` is the vertex placed i-th.
+/// The positions of `points` along a Hilbert curve through them:
+/// `order[i]` is the point placed i-th. Deterministic (median splits, no
+/// random shuffle), so equal inputs get equal orders.
+inline std::vector<std::size_t> hilbert_order(const std::vector<Vector3>& points) {
+  using Kernel = CGAL::Simple_cartesian<double>;
+  std::vector<Kernel::Point_3> positions;
+  positions.reserve(points.size());
+  for (const Vector3& p : points) positions.emplace_back(p[0], p[1], p[2]);
+  std::vector<std::size_t> order(positions.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  using Traits = CGAL::Spatial_sort_traits_adapter_3<
+      Kernel, typename CGAL::Pointer_property_map<Kernel::Point_3>::const_type>;
+  const std::vector<Kernel::Point_3>& view = positions;
+  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(view)));
+  return order;
+}
+
+/// The vertices of `m` along a Hilbert curve through their positions
+/// (`hilbert_order`): `order[i]` is the vertex placed i-th.
 ///
 /// A query's patch is a geodesic disk; numbered this way, its vertices
 /// occupy a few runs of consecutive indices instead of being scattered over
 /// the whole index range as in a typical input file, so the per-vertex
 /// arrays a query reads (neighbours, faces, marks) come in whole cache
-/// lines. Deterministic (median splits, no random shuffle), so equal
-/// meshes get equal orders.
+/// lines.
 inline std::vector<int> locality_order(const Mesh_arrays& m) {
-  using Kernel = CGAL::Simple_cartesian<double>;
-  std::vector<Kernel::Point_3> points;
-  points.reserve(m.number_of_vertices());
-  for (const Vector3& p : m.point) points.emplace_back(p[0], p[1], p[2]);
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using Traits = CGAL::Spatial_sort_traits_adapter_3<
-      Kernel, typename CGAL::Pointer_property_map<Kernel::Point_3>::const_type>;
-  const std::vector<Kernel::Point_3>& positions = points;
-  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(positions)));
+  const std::vector<std::size_t> order = hilbert_order(m.point);
   std::vector<int> result(order.size());
   std::transform(order.begin(), order.end(), result.begin(),
                  [](std::size_t v) { return static_cast<int>(v); });

@@ -4,10 +4,12 @@
 #define EXPMAP_INTERNAL_METHOD_FRONT_H
 
 #include <expmap/Batch.h>
+#include <expmap/Errors.h>
 #include <expmap/Local_map.h>
 #include <expmap/Patch.h>
 #include <expmap/Surface_point.h>
 #include <expmap/internal/Indexed_mesh.h>
+#include <expmap/internal/Locality_order.h>
 #include <expmap/internal/Point_source.h>
 
 #include <CGAL/Default.h>
@@ -88,10 +90,18 @@ class Method_front {
       const std::vector<Surface_point<face_descriptor>>& sources, const Patch& patch,
       const Batch_options& batch = {}, const Query& query = {}) const {
     std::vector<std::size_t> positions(sources.size());
-    for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = i;
+    std::vector<Vector3> points(sources.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+      positions[i] = i;
+      try {
+        points[i] = point_source(sources[i]).position;
+      } catch (const Invalid_input&) {
+        // Its query fails with this error; where it runs does not matter.
+      }
+    }
     return run_batch<vertex_descriptor>(
         positions, batch, [&](std::size_t i) { return compute(sources[i], patch, query); },
-        "source point");
+        "source point", hilbert_order(points));
   }
 
   /// One map per source, computed on `batch.threads` threads (each query as
@@ -118,9 +128,15 @@ class Method_front {
                                                         const Patch& patch,
                                                         const Batch_options& batch = {},
                                                         const Query& query = {}) const {
-    return run_batch<vertex_descriptor>(sources, batch, [&](std::size_t source) {
-      return derived().compute_by_index(source, patch, query);
-    });
+    const Mesh_arrays& m = m_indexed.arrays;
+    std::vector<Vector3> points(sources.size());
+    for (std::size_t i = 0; i < sources.size(); ++i)
+      if (sources[i] < m.number_of_vertices())  // else its query fails
+        points[i] = m.point[static_cast<std::size_t>(m.from_original(sources[i]))];
+    return run_batch<vertex_descriptor>(
+        sources, batch,
+        [&](std::size_t source) { return derived().compute_by_index(source, patch, query); },
+        "source vertex", hilbert_order(points));
   }
 
   /// The number of vertices of the mesh given to the constructor.

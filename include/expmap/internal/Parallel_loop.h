@@ -37,11 +37,17 @@ inline bool& in_parallel_loop() {
 /// boundary, failed queries) never leaves a thread idle while others still
 /// have a queue of their own.
 ///
+/// With `runs`, a thread takes a run of consecutive indices instead: half
+/// its share of what is left (at least one index). Work that goes faster
+/// where neighbouring indices share something (a batch in locality order,
+/// whose neighbouring sources share a subdomain) then has each thread on a
+/// part of its own, apart from the last, short runs that even the load.
+///
 /// If `body` throws, no further index is started; the running calls finish
 /// and the first exception is rethrown here. If the system refuses to start
 /// a thread, the loop runs on the threads it has (at worst the caller's).
 template <class Body>
-void parallel_loop(std::size_t count, unsigned threads, Body body) {
+void parallel_loop(std::size_t count, unsigned threads, Body body, bool runs = false) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> stop{false};
   std::mutex failure_mutex;
@@ -54,14 +60,19 @@ void parallel_loop(std::size_t count, unsigned threads, Body body) {
       ~Mark() { in_parallel_loop() = before; }
     } mark(threads > 1);
     while (!stop.load(std::memory_order_relaxed)) {
-      const std::size_t i = next.fetch_add(1, std::memory_order_relaxed);
-      if (i >= count) return;
-      try {
-        body(i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        stop = true;
+      std::size_t first = next.load(std::memory_order_relaxed), size = 1;
+      do {
+        if (first >= count) return;
+        if (runs) size = std::max<std::size_t>(1, (count - first) / (2 * std::size_t{threads}));
+      } while (!next.compare_exchange_weak(first, first + size, std::memory_order_relaxed));
+      for (std::size_t i = first; i < first + size && !stop.load(std::memory_order_relaxed); ++i) {
+        try {
+          body(i);
+        } catch (...) {
+          std::lock_guard<std::mutex> lock(failure_mutex);
+          if (!failure) failure = std::current_exception();
+          stop = true;
+        }
       }
     }
   };
