@@ -44,6 +44,17 @@ bool throws_with(F f, const std::string& text) {
   return false;
 }
 
+// The message of the `E` that `f` throws, "" if it throws none.
+template <class E, class F>
+std::string message_of(F f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "";
+}
+
 // The numbers of the array `"name":[...]` in `json`, read back; an entry
 // that is no number (such as null) reads as NaN.
 std::vector<double> json_numbers(const std::string& json, const std::string& name) {
@@ -426,13 +437,7 @@ BOOST_AUTO_TEST_CASE(precomputation_progress_is_reported) {
     if (!s.empty() && !s[0].step.empty() && (steps.empty() || steps.back() != s[0].step)) {
       steps.push_back(s[0].step);
       fractions.push_back(s[0].fraction);
-      if (busy.empty()) {
-        try {
-          cache.acquire(heat, 10, small_patch);
-        } catch (const Busy& e) {
-          busy = e.what();
-        }
-      }
+      if (busy.empty()) busy = message_of<Busy>([&] { cache.acquire(heat, 10, small_patch); });
     }
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
@@ -494,11 +499,7 @@ BOOST_AUTO_TEST_CASE(heat_factors_the_whole_mesh_for_a_large_patch) {
     });
     if (running != s.end() && !running->step.empty() && busy.empty()) {
       step = running->step;
-      try {
-        cache.acquire(heat, 2, small);
-      } catch (const Busy& e) {
-        busy = e.what();
-      }
+      busy = message_of<Busy>([&] { cache.acquire(heat, 2, small); });
     }
     std::this_thread::sleep_for(std::chrono::microseconds(200));
   }
