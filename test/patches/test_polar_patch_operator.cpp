@@ -250,4 +250,7 @@ BOOST_AUTO_TEST_CASE(the_same_operator_on_any_number_of_threads_and_clear_errors
                     expmap::Invalid_input);
   BOOST_CHECK_THROW(expmap::polar_patch_operator(mesh, heat, {num_vertices(mesh)}, grid),
                     expmap::Invalid_input);
+  // A method of another mesh: its maps would index other vertices.
+  const Mesh other = load_mesh<Mesh>("cactus.off");
+  BOOST_CHECK_THROW(expmap::polar_patch_operator(other, heat, {0}, grid), expmap::Invalid_input);
 }

@@ -38,7 +38,7 @@ inline double wrap_angle(double a) {
   return a;
 }
 
-/// Visits the faces of `mesh` whose three corners are all among the `count`
+/// Visits the faces in `faces` whose three corners are all among the `count`
 /// vertices of a patch, `vertex(i)` the (renumbered) mesh vertex at patch
 /// position i: each face once, from the faces its smallest corner owns
 /// (stored with that vertex), as the positions of its corners in the face's
@@ -46,14 +46,14 @@ inline double wrap_angle(double a) {
 /// returns whether it did. `position`, sized to the mesh, is scratch (a hash
 /// map would cost a good part of a small query).
 template <class VertexOf, class Visit>
-bool visit_patch_faces(const Mesh_arrays& mesh, std::size_t count, VertexOf vertex,
+bool visit_patch_faces(const Owned_faces& faces, std::size_t count, VertexOf vertex,
                        Vertex_marks& position, Visit visit) {
   position.next_query();
   for (std::size_t i = 0; i < count; ++i) position.mark(vertex(i), static_cast<int>(i));
   for (std::size_t i = 0; i < count; ++i) {
     const int v = vertex(i);
-    for (int p = mesh.owned_face_start[v]; p < mesh.owned_face_start[v + 1]; ++p) {
-      const std::array<int, 3>& face = mesh.owned_face[p];
+    for (int p = faces.start[v]; p < faces.start[v + 1]; ++p) {
+      const std::array<int, 3>& face = faces.face[p];
       if (!position.is_marked(face[1]) || !position.is_marked(face[2])) continue;
       const std::array<std::size_t, 3> corner{{i, static_cast<std::size_t>(position.value(face[1])),
                                                static_cast<std::size_t>(position.value(face[2]))}};
@@ -79,7 +79,7 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
   for (std::size_t i = 0; i < map.size(); ++i) uv.push_back(map.uv(i));
   const auto uv_of = [&](std::size_t i) { return uv[i]; };
   const auto vertex = [&](std::size_t i) { return mesh.from_original(map.indices[i]); };
-  visit_patch_faces(mesh, map.size(), vertex, position, [&](const std::array<std::size_t, 3>& corner) {
+  const auto visit = [&](const std::array<std::size_t, 3>& corner) {
     ++disk.triangles;
     if (signed_uv_area2(uv_of, corner) > 0) return false;
     disk.folds = true;
@@ -87,7 +87,8 @@ Fold_free_disk fold_free_disk(const Mesh_arrays& mesh, const Local_map<VertexDes
     disk.radius = std::min(disk.radius, std::max({map.distance[corner[0]], map.distance[corner[1]],
                                                   map.distance[corner[2]]}));
     return false;
-  });
+  };
+  visit_patch_faces(mesh.owned_faces, map.size(), vertex, position, visit);
   return disk;
 }
 

@@ -35,6 +35,19 @@ inline std::vector<std::size_t> hilbert_order(const std::vector<Vector3>& points
   return order;
 }
 
+/// The order of `vertices` (indices in the user's mesh, as `Mesh_arrays::
+/// from_original()` takes them) along a Hilbert curve through their
+/// positions in `m`, for a batch (`run_batch`); an index out of range
+/// (whose query fails) goes anywhere.
+inline std::vector<std::size_t> hilbert_order(const Mesh_arrays& m,
+                                              const std::vector<std::size_t>& vertices) {
+  std::vector<Vector3> points(vertices.size());
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    if (vertices[i] < m.number_of_vertices())
+      points[i] = m.point[static_cast<std::size_t>(m.from_original(vertices[i]))];
+  return hilbert_order(points);
+}
+
 /// The vertices of `m` along a Hilbert curve through their positions
 /// (`hilbert_order`): `order[i]` is the vertex placed i-th.
 ///

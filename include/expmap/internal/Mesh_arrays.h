@@ -24,6 +24,32 @@
 namespace expmap {
 namespace internal {
 
+/// Each face of a mesh once, under its smallest corner and rotated to start
+/// there (the orientation kept): the faces of a set of vertices, read
+/// contiguously (`visit_patch_faces()`).
+struct Owned_faces {
+  std::vector<int> start;                 // vertex -> the faces it owns (CSR)
+  std::vector<std::array<int, 3>> face;
+};
+
+/// The `Owned_faces` of the faces `face` of a mesh of `n` vertices.
+inline Owned_faces owned_faces(std::size_t n, const std::vector<std::array<int, 3>>& face) {
+  Owned_faces owned;
+  std::vector<int> cursor = filled_on_huge_pages(n, 0);  // counts, then where each row goes next
+  for (const auto& f : face) ++cursor[*std::min_element(f.begin(), f.end())];
+  reserve_on_huge_pages(owned.start, n + 1);
+  owned.start.assign(n + 1, 0);
+  for (std::size_t v = 0; v < n; ++v) owned.start[v + 1] = owned.start[v] + cursor[v];
+  std::copy(owned.start.begin(), owned.start.end() - 1, cursor.begin());
+  reserve_on_huge_pages(owned.face, face.size());
+  owned.face.resize(face.size());
+  for (auto f : face) {
+    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
+    owned.face[cursor[f[0]]++] = f;
+  }
+  return owned;
+}
+
 /// Flat, index-based copy of a triangle mesh: what every algorithm in the
 /// package works on, built once from any CGAL FaceGraph.
 ///
@@ -35,10 +61,7 @@ struct Mesh_arrays {
   std::vector<std::array<int, 3>> face;
   std::vector<int> vertex_face_start, vertex_face;  // vertex -> incident faces (CSR)
   std::vector<int> neighbor_start, neighbor;        // vertex -> adjacent vertices (CSR)
-  // Each face once, under its smallest corner and rotated to start there
-  // (the orientation kept): a set of vertices' faces, read contiguously.
-  std::vector<int> owned_face_start;                // vertex -> the faces it owns (CSR)
-  std::vector<std::array<int, 3>> owned_face;
+  Owned_faces owned_faces;
   std::vector<double> neighbor_distance;            // length of each of those edges
   std::vector<int> component;                       // connected component of each vertex
   std::vector<int> component_size;
@@ -110,19 +133,7 @@ inline void compute_adjacency(Mesh_arrays& m) {
       },
       m.vertex_face_start, m.vertex_face);
 
-  // `counts` now counts the faces each vertex owns, then is their cursor.
-  std::fill(counts.begin(), counts.end(), 0);
-  for (const auto& f : m.face) ++counts[*std::min_element(f.begin(), f.end())];
-  reserve_on_huge_pages(m.owned_face_start, n + 1);
-  m.owned_face_start.assign(n + 1, 0);
-  for (std::size_t v = 0; v < n; ++v) m.owned_face_start[v + 1] = m.owned_face_start[v] + counts[v];
-  std::copy(m.owned_face_start.begin(), m.owned_face_start.end() - 1, counts.begin());
-  reserve_on_huge_pages(m.owned_face, m.face.size());
-  m.owned_face.resize(m.face.size());
-  for (auto f : m.face) {
-    std::rotate(f.begin(), std::min_element(f.begin(), f.end()), f.end());
-    m.owned_face[counts[f[0]]++] = f;
-  }
+  m.owned_faces = owned_faces(n, m.face);
 
   // Neighbours: the other two corners of every incident face, sorted and
   // deduplicated, each with its distance. Gathered vertex by vertex, so the

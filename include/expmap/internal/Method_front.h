@@ -128,19 +128,21 @@ class Method_front {
                                                         const Patch& patch,
                                                         const Batch_options& batch = {},
                                                         const Query& query = {}) const {
-    const Mesh_arrays& m = m_indexed.arrays;
-    std::vector<Vector3> points(sources.size());
-    for (std::size_t i = 0; i < sources.size(); ++i)
-      if (sources[i] < m.number_of_vertices())  // else its query fails
-        points[i] = m.point[static_cast<std::size_t>(m.from_original(sources[i]))];
     return run_batch<vertex_descriptor>(
         sources, batch,
         [&](std::size_t source) { return derived().compute_by_index(source, patch, query); },
-        "source vertex", hilbert_order(points));
+        "source vertex", hilbert_order(m_indexed.arrays, sources));
   }
 
   /// The number of vertices of the mesh given to the constructor.
   std::size_t number_of_vertices() const { return m_indexed.number_of_vertices(); }
+
+  /// \cond SKIP_IN_MANUAL
+  /// The method's copy of the mesh, for what the library builds on a
+  /// method's queries (`polar_patch_operator()`): its faces and positions
+  /// without another pass over the user's mesh.
+  const Mesh_arrays& mesh_arrays() const { return m_indexed.arrays; }
+  /// \endcond
 
  protected:
   Indexed_mesh<TriangleMesh, VertexPointMap> m_indexed;

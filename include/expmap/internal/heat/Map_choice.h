@@ -147,7 +147,7 @@ inline bool folds(const Mesh_arrays& mesh, Workspace& ws) {
   const std::vector<Workspace::Patch_uv>& patch = ws.patch_uv;
   const auto uv_of = [&](std::size_t k) { return patch[k].uv; };
   return visit_patch_faces(
-      mesh, patch.size(), [&](std::size_t k) { return patch[k].vertex; }, ws.map_position,
+      mesh.owned_faces, patch.size(), [&](std::size_t k) { return patch[k].vertex; }, ws.map_position,
       [&](const std::array<std::size_t, 3>& corner) { return !(signed_uv_area2(uv_of, corner) > 0); });
 }
 
