@@ -238,7 +238,8 @@ Heat_factors factor_heat_operators(const Mesh_arrays& mesh, const Heat_options& 
     make_identity_row(A, identity_rows);
     report(options, Precomputation_step::heat_factorization);
     f.heat = factor_locally<Solver>(A, "heat", nullptr, options.factor_precision);
-    f.heat_is_m_matrix = is_m_matrix(A, subdomain ? subdomain->is_cut : std::vector<char>{});
+    static const std::vector<char> no_cut;  // both branches lvalues: is_cut is not copied
+    f.heat_is_m_matrix = is_m_matrix(A, subdomain ? subdomain->is_cut : no_cut);
     if (f.heat_is_m_matrix) {
       const Eigen::VectorXd diagonal = A.diagonal();
       f.inverse_heat_diagonal.resize(static_cast<std::size_t>(A.rows()));
